@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# The README's test command: install what is missing, build, run every test.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+bash "$root/scripts/build.sh" -DSEGMAT_BUILD_TESTS=ON
+cd "$root/build"
+ctest --output-on-failure -j "${SEGMAT_JOBS:-$(nproc)}"

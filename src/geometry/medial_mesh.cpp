@@ -1,0 +1,147 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <segmat/common/error.h>
+#include <segmat/geometry/medial_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
+namespace segmat {
+namespace {
+std::uint64_t
+edgeKey(int a, int b)
+{
+  if (a > b)
+    std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
+}
+} // namespace
+
+MedialMesh::MedialMesh(std::vector<Eigen::Vector3d> centers, std::vector<double> radii,
+                       const std::vector<Eigen::Vector2i>& edges,
+                       const std::vector<Eigen::Vector3i>& triangles)
+: centers_(std::move(centers)), radii_(std::move(radii))
+{
+  if (centers_.size() != radii_.size())
+    throw Error("MedialMesh: " + std::to_string(centers_.size()) + " centres but " +
+                std::to_string(radii_.size()) + " radii");
+  const int n = static_cast<int>(centers_.size());
+  for (int v = 0; v < n; ++v) {
+    if (!centers_[v].allFinite())
+      throw Error("MedialMesh: sphere " + std::to_string(v) + " has a non-finite centre");
+    if (!std::isfinite(radii_[v]) || radii_[v] < 0.0)
+      throw Error("MedialMesh: sphere " + std::to_string(v) + " has an invalid radius");
+  }
+  auto check = [n](int idx, const char* what, std::size_t i) {
+    if (idx < 0 || idx >= n)
+      throw Error(std::string("MedialMesh: ") + what + " " + std::to_string(i) + " refers to vertex " +
+                  std::to_string(idx) + " of " + std::to_string(n));
+  };
+
+  std::unordered_map<std::uint64_t, int> edge_index;
+  auto addEdge = [&](int a, int b) {
+    const auto key = edgeKey(a, b);
+    auto it = edge_index.find(key);
+    if (it != edge_index.end())
+      return it->second;
+    const int id = static_cast<int>(edges_.size());
+    edges_.emplace_back(std::min(a, b), std::max(a, b));
+    edge_index.emplace(key, id);
+    return id;
+  };
+
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    check(edges[i][0], "edge", i);
+    check(edges[i][1], "edge", i);
+    if (edges[i][0] != edges[i][1])
+      addEdge(edges[i][0], edges[i][1]);
+  }
+
+  // Triangles are deduplicated on their sorted corner triple.
+  std::vector<std::array<int, 3>> seen;
+  seen.reserve(triangles.size());
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const Eigen::Vector3i& t = triangles[i];
+    for (int k = 0; k < 3; ++k)
+      check(t[k], "triangle", i);
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+      continue;
+    std::array<int, 3> key{t[0], t[1], t[2]};
+    std::sort(key.begin(), key.end());
+    seen.push_back(key);
+  }
+  std::vector<std::size_t> order(seen.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return seen[a] < seen[b]; });
+  std::vector<char> keep(seen.size(), 1);
+  for (std::size_t i = 1; i < order.size(); ++i)
+    if (seen[order[i]] == seen[order[i - 1]])
+      keep[order[i]] = 0;
+  std::size_t s = 0;
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const Eigen::Vector3i& t = triangles[i];
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+      continue;
+    if (keep[s++])
+      triangles_.push_back(t);
+  }
+
+  edge_triangle_count_.assign(edges_.size(), 0);
+  for (const Eigen::Vector3i& t : triangles_)
+    for (int k = 0; k < 3; ++k) {
+      const int e = addEdge(t[k], t[(k + 1) % 3]);
+      if (e >= static_cast<int>(edge_triangle_count_.size()))
+        edge_triangle_count_.resize(e + 1, 0);
+      ++edge_triangle_count_[e];
+    }
+
+  vertex_edges_.assign(n, {});
+  vertex_triangles_.assign(n, {});
+  for (std::size_t e = 0; e < edges_.size(); ++e) {
+    vertex_edges_[edges_[e][0]].push_back(static_cast<int>(e));
+    vertex_edges_[edges_[e][1]].push_back(static_cast<int>(e));
+  }
+  for (std::size_t t = 0; t < triangles_.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      vertex_triangles_[triangles_[t][k]].push_back(static_cast<int>(t));
+}
+
+int
+MedialMesh::findEdge(int a, int b) const
+{
+  if (a < 0 || b < 0 || a >= static_cast<int>(vertex_edges_.size()))
+    return -1;
+  const int lo = std::min(a, b), hi = std::max(a, b);
+  for (int e : vertex_edges_[a])
+    if (edges_[e][0] == lo && edges_[e][1] == hi)
+      return e;
+  return -1;
+}
+
+double
+MedialMesh::centerBoundingBoxDiagonal() const
+{
+  if (centers_.empty())
+    return 0.0;
+  Eigen::Vector3d lo = centers_.front(), hi = centers_.front();
+  for (const Eigen::Vector3d& c : centers_) {
+    lo = lo.cwiseMin(c);
+    hi = hi.cwiseMax(c);
+  }
+  return (hi - lo).norm();
+}
+
+double
+MedialMesh::maxRadius() const
+{
+  return radii_.empty() ? 0.0 : *std::max_element(radii_.begin(), radii_.end());
+}
+
+} // namespace segmat

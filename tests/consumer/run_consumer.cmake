@@ -1,0 +1,15 @@
+# Installs the built segmat into a scratch prefix and builds + runs tests/consumer against it.
+set(prefix ${SEGMAT_BUILD_DIR}/consumer-prefix)
+set(build ${SEGMAT_BUILD_DIR}/consumer-build)
+file(REMOVE_RECURSE ${prefix} ${build})
+function(run)
+  execute_process(COMMAND ${ARGV} RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "consumer step failed (${rc}): ${ARGV}")
+  endif()
+endfunction()
+run(${CMAKE_COMMAND} --install ${SEGMAT_BUILD_DIR} --prefix ${prefix})
+run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${build} -DCMAKE_PREFIX_PATH=${prefix}
+    -DCMAKE_BUILD_TYPE=Release)
+run(${CMAKE_COMMAND} --build ${build})
+run(${build}/segmat_consumer ${SEGMAT_DATA_DIR}/teddy/teddy_smat.ma)

@@ -1,0 +1,108 @@
+// Core geometry types on hand-built inputs.
+#include <segmat/common/error.h>
+#include <segmat/common/point_types.h>
+#include <segmat/geometry/medial_mesh.h>
+#include <segmat/geometry/triangle_mesh.h>
+#include <segmat/segmentation/mat_graph.h>
+
+#include <gtest/gtest.h>
+#include <pcl/point_cloud.h>
+
+#include <cmath>
+
+using namespace segmat;
+
+namespace {
+// Unit tetrahedron, outward-wound.
+TriangleMesh
+tetrahedron()
+{
+  return TriangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                      {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
+}
+} // namespace
+
+TEST(TriangleMesh, NormalsAreaCentroidDiagonal)
+{
+  const TriangleMesh m = tetrahedron();
+  EXPECT_TRUE(m.faceNormal(0).isApprox(Eigen::Vector3d(0, 0, -1)));
+  EXPECT_TRUE(m.faceNormal(3).isApprox(Eigen::Vector3d(1, 1, 1).normalized()));
+  EXPECT_DOUBLE_EQ(m.faceArea(0), 0.5);
+  EXPECT_NEAR(m.faceArea(3), std::sqrt(3.0) / 2.0, 1e-15);
+  EXPECT_TRUE(m.faceCentroid(3).isApprox(Eigen::Vector3d(1, 1, 1) / 3.0));
+  EXPECT_DOUBLE_EQ(m.boundingBoxDiagonal(), std::sqrt(3.0));
+}
+
+TEST(TriangleMesh, AdjacencyClosedOpenAndNonManifold)
+{
+  TriangleMesh m = tetrahedron();
+  // Closed: 6 edges, each with 2 faces.
+  EXPECT_EQ(m.faceAdjacency().size(), 6u);
+  // Open: dropping a face leaves 3 interior edges.
+  m.faces.pop_back();
+  EXPECT_EQ(m.faceAdjacency().size(), 3u);
+  // Non-manifold fin: a third face on edge (0,1) pairs with both of its faces.
+  m = tetrahedron();
+  m.vertices.push_back({0.5, -1, 0});
+  m.faces.push_back({0, 1, 4});
+  EXPECT_EQ(m.faceAdjacency().size(), 8u);
+  // Degenerate face (repeated index): no edges, no crash, zero normal.
+  m.faces.push_back({2, 2, 3});
+  EXPECT_EQ(m.faceAdjacency().size(), 8u);
+  EXPECT_EQ(m.faceNormal(5), Eigen::Vector3d::Zero());
+}
+
+TEST(MedialMesh, NormalisesAndDerivesIncidence)
+{
+  // Two triangles sharing edge (1,2), a pure edge (3,4), a duplicate triangle, a missing side,
+  // a self-loop edge and a degenerate triangle.
+  std::vector<Eigen::Vector3d> c{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 2, 0}};
+  std::vector<double> r{0.1, 0.2, 0.3, 0.4, 0.5};
+  MedialMesh m(c, r, {{0, 1}, {2, 1}, {3, 4}, {4, 4}},
+               {{0, 1, 2}, {2, 1, 3}, {1, 0, 2}, {1, 1, 2}});
+  EXPECT_EQ(m.numTriangles(), 2u);
+  EXPECT_EQ(m.numEdges(), 6u); // 01 12 34 + 02 13 23
+  EXPECT_EQ(m.edgeTriangleCount(m.findEdge(1, 2)), 2);
+  EXPECT_TRUE(m.isPureEdge(m.findEdge(4, 3)));
+  EXPECT_FALSE(m.isPureEdge(m.findEdge(0, 2)));
+  EXPECT_EQ(m.findEdge(0, 4), -1);
+  EXPECT_EQ(m.vertexTriangles(1).size(), 2u);
+  EXPECT_EQ(m.vertexEdges(4).size(), 1u);
+  EXPECT_DOUBLE_EQ(m.maxRadius(), 0.5);
+  EXPECT_DOUBLE_EQ(m.centerBoundingBoxDiagonal(), std::sqrt(8.0));
+}
+
+TEST(MedialMesh, RejectsBadInput)
+{
+  EXPECT_THROW(MedialMesh({{0, 0, 0}}, {-1.0}, {}, {}), Error);
+  EXPECT_THROW(MedialMesh({{0, 0, 0}}, {NAN}, {}, {}), Error);
+  EXPECT_THROW(MedialMesh({{0, 0, 0}, {1, 0, 0}}, {1, 1}, {{0, 2}}, {}), Error);
+  EXPECT_THROW(MedialMesh({{0, 0, 0}}, {1, 1}, {}, {}), Error);
+}
+
+TEST(MatGraph, NodesAndGatedAdjacency)
+{
+  // Slab (0,1,2), slab (1,2,3) and pure cone (3,4); sphere 4 is 3x fatter than the cone's other end.
+  std::vector<Eigen::Vector3d> c{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 2, 0}};
+  MedialMesh m(c, {1, 1, 1, 1, 1}, {{3, 4}}, {{0, 1, 2}, {1, 2, 3}});
+  MatGraph g = MatGraph::fromMedialMesh(m);
+  ASSERT_EQ(g.numNodes(), 3u);
+  EXPECT_EQ(g.node(2).kind, MatNodeKind::Cone);
+  EXPECT_TRUE(g.node(2).centroid.isApprox(Eigen::Vector3d(1.5, 1.5, 0)));
+  EXPECT_EQ(g.numEdges(), 2u); // slab0-slab1 (share 1,2), slab1-cone (share 3)
+  EXPECT_TRUE(g.hasPrimitives());
+  // Cone mean radius (1+6)/2 = 3.5 vs slab 1: ratio 3.5 >= 2.5, so the gate removes that edge.
+  MedialMesh fat(c, {1, 1, 1, 1, 6}, {{3, 4}}, {{0, 1, 2}, {1, 2, 3}});
+  EXPECT_EQ(MatGraph::fromMedialMesh(fat).numEdges(), 1u);
+}
+
+TEST(MedialPoint, RegisteredWithPcl)
+{
+  pcl::PointCloud<MedialPoint> cloud;
+  MedialPoint p;
+  p.x = 1;
+  p.radius = 0.5f;
+  cloud.push_back(p);
+  EXPECT_EQ(cloud.size(), 1u);
+  EXPECT_FLOAT_EQ(cloud[0].radius, 0.5f);
+}
