@@ -1,0 +1,112 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <segmat/geometry/delaunay_3d.h>
+
+extern "C" {
+#include <libqhull_r/qhull_ra.h>
+}
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace segmat {
+
+bool
+delaunayTetrahedralize(const std::vector<Eigen::Vector3d>& points, DelaunayTetrahedra& output,
+                       std::string& error_message)
+{
+  output.tetrahedra.clear();
+  output.neighbors.clear();
+  error_message.clear();
+  const int n = static_cast<int>(points.size());
+  if (n < 4) {
+    error_message = "fewer than 4 points";
+    return false;
+  }
+  std::vector<coordT> coords(static_cast<std::size_t>(n) * 3);
+  for (int i = 0; i < n; ++i) {
+    if (!points[i].allFinite()) {
+      error_message = "non-finite point " + std::to_string(i);
+      return false;
+    }
+    for (int k = 0; k < 3; ++k)
+      coords[3 * i + k] = points[i][k];
+  }
+
+  // qhull reports through a FILE*: collect it in memory instead of spamming stderr.
+  char* error_buffer = nullptr;
+  std::size_t error_size = 0;
+  FILE* error_file = open_memstream(&error_buffer, &error_size);
+  qhT qh_qh;
+  qhT* qh = &qh_qh;
+  qh_zero(qh, error_file);
+  char options[] = "qhull d Qt Qbb Qz";
+  const int exit_code =
+      qh_new_qhull(qh, 3, n, coords.data(), False, options, nullptr, error_file);
+  if (exit_code == 0) {
+    facetT* facet;
+    vertexT *vertex, **vertexp;
+    facetT *neighbor, **neighborp;
+    std::vector<int> tet_of_facet(qh->facet_id + 1, -1);
+    FORALLfacets
+    {
+      if (facet->upperdelaunay || qh_setsize(qh, facet->vertices) != 4)
+        continue;
+      Eigen::Vector4i corners;
+      int k = 0;
+      bool finite = true;
+      FOREACHvertex_(facet->vertices)
+      {
+        const int id = qh_pointid(qh, vertex->point);
+        finite = finite && id >= 0 && id < n; // Qz's point at infinity has id n
+        corners[k++] = id;
+      }
+      if (!finite)
+        continue;
+      tet_of_facet[facet->id] = static_cast<int>(output.tetrahedra.size());
+      output.tetrahedra.push_back(corners);
+    }
+    output.neighbors.assign(output.tetrahedra.size(), Eigen::Vector4i::Constant(-1));
+    FORALLfacets
+    {
+      const int t = tet_of_facet[facet->id];
+      if (t < 0)
+        continue;
+      const Eigen::Vector4i& mine = output.tetrahedra[t];
+      FOREACHneighbor_(facet)
+      {
+        const int u = neighbor->id < tet_of_facet.size() ? tet_of_facet[neighbor->id] : -1;
+        if (u < 0)
+          continue;
+        // The neighbour shares three corners; it lies opposite the fourth.
+        const Eigen::Vector4i& theirs = output.tetrahedra[u];
+        for (int i = 0; i < 4; ++i)
+          if ((theirs.array() != mine[i]).all()) {
+            output.neighbors[t][i] = u;
+            break;
+          }
+      }
+    }
+  }
+  qh_freeqhull(qh, !qh_ALL);
+  int current_long = 0, total_long = 0;
+  qh_memfreeshort(qh, &current_long, &total_long);
+  std::fclose(error_file);
+  if (exit_code != 0) {
+    std::string text(error_buffer ? error_buffer : "", error_size);
+    // Keep the first non-empty line: "QH6154 qhull precision error: initial simplex is flat..."
+    std::size_t start = text.find_first_not_of("\n ");
+    if (start == std::string::npos)
+      error_message = "qhull exit code " + std::to_string(exit_code);
+    else
+      error_message = text.substr(start, text.find('\n', start) - start);
+    output.tetrahedra.clear();
+    output.neighbors.clear();
+  }
+  std::free(error_buffer);
+  return exit_code == 0;
+}
+
+} // namespace segmat

@@ -1,0 +1,308 @@
+// Initial Voronoi medial mesh (Q-MAT step 1) on shapes whose medial axis is known.
+#include <segmat/geometry/delaunay_3d.h>
+#include <segmat/geometry/surface_sampling.h>
+#include <segmat/geometry/winding_number.h>
+#include <segmat/medial/voronoi_mat.h>
+
+#include "util/synthetic_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace segmat;
+
+namespace {
+MedialMesh
+computeMat(const TriangleMesh& mesh, double spacing = 0.015, double jitter = 1e-6,
+           bool expect_ok = true, VoronoiMatStatistics* stats = nullptr)
+{
+  VoronoiMat vmat;
+  vmat.setInputMesh(std::make_shared<TriangleMesh>(mesh));
+  vmat.setMaxSpacing(spacing);
+  vmat.setJitter(jitter);
+  MedialMesh mat;
+  EXPECT_EQ(vmat.compute(mat), expect_ok);
+  if (stats)
+    *stats = vmat.getStatistics();
+  return mat;
+}
+
+// Distance from p to the segment z ∈ [-h, h] of the z axis.
+double
+distanceToAxisSegment(const Eigen::Vector3d& p, double h)
+{
+  const double z = std::max(-h, std::min(h, p.z()));
+  return (p - Eigen::Vector3d(0, 0, z)).norm();
+}
+
+double
+fraction(std::size_t count, std::size_t total)
+{
+  return total == 0 ? 0.0 : static_cast<double>(count) / static_cast<double>(total);
+}
+} // namespace
+
+TEST(VoronoiMat, RegularTetrahedronHasOneSphereAtItsCentre)
+{
+  // Circumcentre of this regular tetrahedron is the origin, circumradius √3.
+  const TriangleMesh tet({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}},
+                         {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}});
+  ASSERT_GT(test::signedVolume(tet), 0.0);
+  const MedialMesh mat = computeMat(tet, 0.0, 0.0);
+  ASSERT_EQ(mat.numVertices(), 1u);
+  EXPECT_LT(mat.centers()[0].norm(), 1e-12);
+  EXPECT_NEAR(mat.radii()[0], std::sqrt(3.0), 1e-12);
+  EXPECT_EQ(mat.numEdges(), 0u);
+  EXPECT_EQ(mat.numTriangles(), 0u);
+
+  // The corner tetrahedron's circumcentre (0.5, 0.5, 0.5) is outside it: an empty medial mesh.
+  EXPECT_EQ(computeMat(test::tetrahedron(), 0.0, 0.0).numVertices(), 0u);
+}
+
+TEST(VoronoiMat, CosphericalIcosphereCollapsesToItsCentre)
+{
+  // Vertices of an icosphere are co-spherical: every Delaunay circumsphere is the unit sphere,
+  // up to the 1e-6 jitter, so every medial vertex sits at the centre with radius 1.
+  VoronoiMatStatistics stats;
+  const MedialMesh mat = computeMat(test::icosphere(3), 0.0, 1e-6, true, &stats);
+  EXPECT_EQ(stats.num_samples, 642u);
+  ASSERT_GT(mat.numVertices(), 100u);
+  for (std::size_t v = 0; v < mat.numVertices(); ++v) {
+    EXPECT_LT(mat.centers()[v].norm(), 1e-3);
+    EXPECT_NEAR(mat.radii()[v], 1.0, 1e-3);
+  }
+}
+
+TEST(VoronoiMat, DenseSphereSpheresAreInsideAndMaximal)
+{
+  // With fill samples on the flat faces the input is no longer co-spherical; centres stay inside
+  // and every ball is (close to) maximal: its radius is at least the distance from its centre to
+  // the surface (it passes through surface samples) and at most that plus the sample spacing
+  // (an empty ball can only bulge out between samples).
+  const TriangleMesh sphere = test::icosphere(4);
+  VoronoiMatStatistics stats;
+  const double spacing = 0.01 * 2.0 * std::sqrt(3.0); // relative to the bounding-box diagonal
+  const MedialMesh mat = computeMat(sphere, 0.01, 1e-6, true, &stats);
+  EXPECT_GT(stats.num_samples, sphere.vertices.size());
+  ASSERT_GT(mat.numVertices(), 1000u);
+  const WindingNumber w(sphere);
+  std::size_t near_centre = 0;
+  for (std::size_t v = 0; v < mat.numVertices(); ++v) {
+    const Eigen::Vector3d& c = mat.centers()[v];
+    const double r = mat.radii()[v];
+    ASSERT_TRUE(std::isfinite(r));
+    EXPECT_GT(w(c), 0.5);
+    EXPECT_LT(c.norm(), 1.0);
+    EXPECT_LE(r, 1.0 + 1e-6);
+    // The polyhedron lies between radii 0.9988 and 1 (icosphere(4)): distance to it ≈ 1 − |c|.
+    EXPECT_GE(r, 1.0 - c.norm() - 0.002);
+    EXPECT_LE(r, 1.0 - c.norm() + spacing);
+    near_centre += c.norm() < 0.05;
+  }
+  // The sphere's medial axis is its centre: a large share of the spheres sit there with radius
+  // ≈ 1; the rest are short spikes towards the flat facets, which carry fill samples (Q-MAT's
+  // simplification removes spikes first).
+  EXPECT_NEAR(mat.maxRadius(), 1.0, 0.01);
+  EXPECT_GT(fraction(near_centre, mat.numVertices()), 0.25)
+      << near_centre << " of " << mat.numVertices();
+}
+
+TEST(VoronoiMat, CapsuleCentresLieOnTheAxis)
+{
+  // Capsule: radius 0.5, cylinder length 2 along z. Medial axis: the segment |z| ≤ 1, radius 0.5.
+  const double radius = 0.5, half = 1.0;
+  const TriangleMesh capsule = test::capsule(radius, 2 * half, 64, 32, 16);
+  const MedialMesh mat = computeMat(capsule);
+  const double spacing = 0.015 * std::sqrt(1.0 + 1.0 + 9.0); // of the diagonal (1, 1, 3)
+  ASSERT_GT(mat.numVertices(), 1000u);
+  std::size_t on_axis = 0;
+  for (std::size_t v = 0; v < mat.numVertices(); ++v) {
+    const Eigen::Vector3d& c = mat.centers()[v];
+    const double r = mat.radii()[v];
+    const double d = distanceToAxisSegment(c, half);
+    // Inside, and the ball reaches the surface (at distance radius − d from c), bulging out by
+    // less than the sample spacing (the polygonal capsule is within ~1.5e-3 of the true one).
+    EXPECT_LT(d, radius);
+    EXPECT_GE(r, radius - d - 3e-3);
+    EXPECT_LE(r, radius - d + spacing);
+    on_axis += d < 0.02 && std::abs(r - radius) < 0.02;
+  }
+  EXPECT_GT(fraction(on_axis, mat.numVertices()), 0.5) << on_axis << " of " << mat.numVertices();
+  // The medial mesh has sheets (triangles) and cones (edges).
+  EXPECT_GT(mat.numTriangles(), 0u);
+}
+
+TEST(VoronoiMat, GridBoxNeedsJitterAndStaysInside)
+{
+  // A box whose sides are 12×12 grids: co-spherical, grid-like input (qhull's worst case).
+  const Eigen::Vector3d lo(0, 0, 0), hi(2, 1, 1);
+  const MedialMesh mat = computeMat(test::box(lo, hi, 12));
+  ASSERT_GT(mat.numVertices(), 100u);
+  for (std::size_t v = 0; v < mat.numVertices(); ++v) {
+    const Eigen::Vector3d& c = mat.centers()[v];
+    const double to_boundary = std::min((c - lo).minCoeff(), (hi - c).minCoeff());
+    EXPECT_GT(to_boundary, 0.0);
+    // An empty ball through surface samples cannot poke out by more than the sample spacing.
+    EXPECT_LE(mat.radii()[v], to_boundary + 1.0 / 12.0);
+  }
+}
+
+TEST(VoronoiMat, TorusKeepsItsHole)
+{
+  // Torus: major radius 2, tube 0.5. Medial axis: the circle of radius 2 in z = 0.
+  const MedialMesh mat = computeMat(test::torus(2.0, 0.5, 96, 32));
+  ASSERT_GT(mat.numVertices(), 1000u);
+  std::size_t on_circle = 0;
+  for (std::size_t v = 0; v < mat.numVertices(); ++v) {
+    const Eigen::Vector3d& c = mat.centers()[v];
+    const double d = std::hypot(std::hypot(c.x(), c.y()) - 2.0, c.z());
+    EXPECT_LT(d, 0.5);
+    EXPECT_GT(std::hypot(c.x(), c.y()), 1.5); // nothing in the hole
+    on_circle += d < 0.02;
+  }
+  EXPECT_GT(fraction(on_circle, mat.numVertices()), 0.5)
+      << on_circle << " of " << mat.numVertices();
+}
+
+TEST(VoronoiMat, DeterministicAcrossRunsAndThreads)
+{
+  const TriangleMesh capsule = test::capsule(0.4, 1.0, 32, 12, 8);
+  VoronoiMat a, b;
+  a.setInputMesh(std::make_shared<TriangleMesh>(capsule));
+  b.setInputMesh(std::make_shared<TriangleMesh>(capsule));
+  b.setNumberOfThreads(2);
+  MedialMesh ma, mb;
+  ASSERT_TRUE(a.compute(ma));
+  ASSERT_TRUE(b.compute(mb));
+  ASSERT_EQ(ma.numVertices(), mb.numVertices());
+  EXPECT_EQ(ma.centers(), mb.centers());
+  EXPECT_EQ(ma.radii(), mb.radii());
+  EXPECT_EQ(ma.edges(), mb.edges());
+  EXPECT_EQ(ma.triangles(), mb.triangles());
+}
+
+TEST(VoronoiMat, BadInputFailsCleanly)
+{
+  VoronoiMat vmat;
+  MedialMesh mat;
+  EXPECT_FALSE(vmat.compute(mat)); // no input
+  vmat.setInputMesh(std::make_shared<TriangleMesh>());
+  EXPECT_FALSE(vmat.compute(mat)); // empty
+  EXPECT_TRUE(mat.empty());
+
+  TriangleMesh nan_mesh = test::icosphere(1);
+  nan_mesh.vertices[3].x() = std::numeric_limits<double>::quiet_NaN();
+  computeMat(nan_mesh, 0.015, 1e-6, false);
+
+  TriangleMesh bad_index = test::icosphere(1);
+  bad_index.faces.emplace_back(0, 1, 1000);
+  computeMat(bad_index, 0.015, 1e-6, false);
+
+  // One triangle: 3 samples with max spacing 0.
+  computeMat(TriangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}), 0.0, 0.0, false);
+  // A flat, two-sided square: coplanar samples, qhull reports a flat simplex.
+  TriangleMesh flat({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
+                    {{0, 1, 2}, {0, 2, 3}, {0, 2, 1}, {0, 3, 2}});
+  computeMat(flat, 0.1, 0.0, false);
+  // All faces degenerate (one point): no extent.
+  computeMat(TriangleMesh({{1, 1, 1}}, {{0, 0, 0}}), 0.015, 1e-6, false);
+
+  // An unreferenced NaN vertex is not part of the surface and is ignored.
+  TriangleMesh stray = test::icosphere(2);
+  stray.vertices.emplace_back(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  EXPECT_GT(computeMat(stray).numVertices(), 0u);
+}
+
+TEST(VoronoiMat, OpenMeshIsABestEffort)
+{
+  // A capsule with a band of faces removed: the winding number still separates inside from
+  // outside away from the gap, and nothing crashes.
+  TriangleMesh open = test::capsule(0.5, 2.0, 48, 24, 12);
+  open.faces.erase(open.faces.begin() + 600, open.faces.begin() + 640);
+  const MedialMesh mat = computeMat(open);
+  ASSERT_GT(mat.numVertices(), 100u);
+  for (std::size_t v = 0; v < mat.numVertices(); ++v) {
+    ASSERT_TRUE(std::isfinite(mat.radii()[v]));
+    EXPECT_LT(distanceToAxisSegment(mat.centers()[v], 1.0), 0.5 + 1e-9);
+  }
+  // A hemisphere-like open sheet encloses nothing much but must not crash either.
+  TriangleMesh cap = test::icosphere(3);
+  std::vector<Eigen::Vector3i> kept;
+  for (const auto& f : cap.faces)
+    if (cap.faceCentroid(static_cast<int>(&f - cap.faces.data())).z() > 0.0)
+      kept.push_back(f);
+  cap.faces = kept;
+  VoronoiMat vmat;
+  vmat.setInputMesh(std::make_shared<TriangleMesh>(cap));
+  MedialMesh sheet;
+  EXPECT_TRUE(vmat.compute(sheet));
+}
+
+TEST(SurfaceSampling, FillsLongEdgesAndBigFaces)
+{
+  // One right triangle with legs 4: edges of length 4, 4, 4√2 with spacing 1 get 3, 3, 5 points;
+  // the lattice adds interior points at least 0.5 from every side.
+  const TriangleMesh tri({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}, {{0, 1, 2}});
+  const auto samples = sampleSurface(tri, 1.0);
+  ASSERT_GE(samples.size(), 3u + 11u);
+  std::size_t interior = 0;
+  for (const auto& p : samples) {
+    EXPECT_NEAR(p.z(), 0.0, 1e-12);
+    EXPECT_GE(p.x(), -1e-12);
+    EXPECT_GE(p.y(), -1e-12);
+    EXPECT_LE(p.x() + p.y(), 4.0 + 1e-12);
+    const double d = std::min({p.x(), p.y(), (4.0 - p.x() - p.y()) / std::sqrt(2.0)});
+    if (d > 1e-9) {
+      EXPECT_GE(d, 0.5 - 1e-12);
+      ++interior;
+    }
+  }
+  EXPECT_EQ(samples.size(), 3u + 11u + interior);
+  EXPECT_GT(interior, 0u);
+  // Every point of the triangle is within one spacing of a sample.
+  for (double x = 0.05; x < 4; x += 0.1)
+    for (double y = 0.05; x + y < 4; y += 0.1) {
+      double best = 1e9;
+      for (const auto& p : samples)
+        best = std::min(best, (p - Eigen::Vector3d(x, y, 0)).norm());
+      EXPECT_LT(best, 1.0);
+    }
+  // Max spacing 0: the used vertices only.
+  TriangleMesh with_stray = tri;
+  with_stray.vertices.emplace_back(9, 9, 9);
+  EXPECT_EQ(sampleSurface(with_stray, 0.0).size(), 3u);
+}
+
+TEST(Delaunay3D, CubeCornersAndFailures)
+{
+  // 8 cube corners + the centre: the centre joins every hull face, 12 tetrahedra.
+  std::vector<Eigen::Vector3d> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1},
+                                 {1, 0, 1}, {0, 1, 1}, {1, 1, 1}, {0.5, 0.5, 0.5}};
+  DelaunayTetrahedra dt;
+  std::string message;
+  ASSERT_TRUE(delaunayTetrahedralize(p, dt, message)) << message;
+  EXPECT_EQ(dt.tetrahedra.size(), 12u);
+  for (std::size_t t = 0; t < dt.tetrahedra.size(); ++t) {
+    EXPECT_TRUE((dt.tetrahedra[t].array() == 8).any());
+    int hull = 0;
+    for (int i = 0; i < 4; ++i) {
+      const int u = dt.neighbors[t][i];
+      if (u < 0) {
+        ++hull;
+        continue;
+      }
+      // Neighbour relation is symmetric and u does not contain the opposite corner.
+      EXPECT_FALSE((dt.tetrahedra[u].array() == dt.tetrahedra[t][i]).any());
+      EXPECT_TRUE((dt.neighbors[u].array() == static_cast<int>(t)).any());
+    }
+    EXPECT_EQ(hull, 1);
+  }
+  // Coplanar and too few points fail with a message.
+  EXPECT_FALSE(delaunayTetrahedralize({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, dt, message));
+  EXPECT_FALSE(message.empty());
+  EXPECT_TRUE(dt.tetrahedra.empty());
+  EXPECT_FALSE(delaunayTetrahedralize({{0, 0, 0}}, dt, message));
+}
