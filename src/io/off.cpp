@@ -4,11 +4,10 @@
  */
 #include "text_file.h"
 
-#include <segmat/io/atomic_file.h>
 #include <segmat/io/off.h>
 
+#include <array>
 #include <cstdint>
-#include <ostream>
 
 namespace segmat {
 namespace io {
@@ -119,25 +118,14 @@ saveOff(const std::string& path, const TriangleMesh& mesh)
 {
   detail::checkMeshForWriting(path, mesh);
   std::string text = "OFF\n";
-  detail::appendInt(text, static_cast<long>(mesh.vertices.size()));
-  text += ' ';
-  detail::appendInt(text, static_cast<long>(mesh.faces.size()));
-  text += " 0\n";
-  for (const Eigen::Vector3d& p : mesh.vertices) {
-    for (int k = 0; k < 3; ++k) {
-      detail::appendDouble(text, p[k]);
-      text += k < 2 ? ' ' : '\n';
-    }
-  }
-  for (const Eigen::Vector3i& f : mesh.faces) {
-    text += '3';
-    for (int k = 0; k < 3; ++k) {
-      text += ' ';
-      detail::appendInt(text, f[k]);
-    }
-    text += '\n';
-  }
-  writeFileAtomically(path, [&](std::ostream& out) { out.write(text.data(), text.size()); });
+  detail::appendLine(text, "",
+                     std::array<long, 3>{static_cast<long>(mesh.vertices.size()),
+                                         static_cast<long>(mesh.faces.size()), 0L});
+  for (const Eigen::Vector3d& p : mesh.vertices)
+    detail::appendLine(text, "", p);
+  for (const Eigen::Vector3i& f : mesh.faces)
+    detail::appendLine(text, "3", f);
+  detail::writeTextAtomically(path, text);
 }
 
 } // namespace io
