@@ -220,3 +220,47 @@ TEST(WeldPoints, ExactAndTolerance)
   // Greedy, not transitive: (2,0,0) is 2 from representative 0, so it stays on its own.
   EXPECT_EQ(weldPoints(p, 1.5), (std::vector<int>{0, 0, 0, 0, 0, 5, 6}));
 }
+
+TEST(WindingNumber, CrossingCountsMatchWindingNumbers)
+{
+  // Torus (genus 1) and two nested-but-separate shapes: for every segment whose count is certain,
+  // the signed number of crossings equals the difference of the exact winding numbers.
+  for (const TriangleMesh& mesh :
+       {test::torus(2.0, 0.5, 48, 16),
+        test::merge({test::capsule(0.5, 1.0, 24, 8, 6), icosphere(2, 0.4, {2.5, 0, 0})})}) {
+    const WindingNumber w(mesh);
+    ASSERT_TRUE(w.isClosed());
+    const std::vector<Eigen::Vector3d> a = scatter(400, 3.0, 5), b = scatter(400, 3.0, 6);
+    int certain = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      int change = 0;
+      if (!w.windingNumberChange(a[i], b[i], change))
+        continue;
+      ++certain;
+      EXPECT_EQ(change, std::lround(w.exact(b[i])) - std::lround(w.exact(a[i])));
+    }
+    EXPECT_GT(certain, 390);
+    // Straight through a vertex and along an edge: uncertain, or right.
+    for (std::size_t v = 0; v < 20; ++v) {
+      const Eigen::Vector3d p = mesh.vertices[v];
+      int change = 0;
+      if (w.windingNumberChange(1.5 * p, 0.5 * p, change))
+        EXPECT_EQ(change, std::lround(w.exact(0.5 * p)) - std::lround(w.exact(1.5 * p)));
+    }
+  }
+  // An open mesh has no piecewise-constant winding number.
+  TriangleMesh open = icosphere(2);
+  open.faces.pop_back();
+  const WindingNumber w(open);
+  EXPECT_FALSE(w.isClosed());
+  int change = 0;
+  EXPECT_FALSE(w.windingNumberChange({0, 0, 0}, {2, 0, 0}, change));
+  // Crossing the unit sphere once, outward: −1; inward: +1; twice: 0.
+  const WindingNumber sphere(icosphere(2));
+  ASSERT_TRUE(sphere.windingNumberChange({0.1, 0.05, 0.02}, {2, 0.3, 0.1}, change));
+  EXPECT_EQ(change, -1);
+  ASSERT_TRUE(sphere.windingNumberChange({2, 0.3, 0.1}, {0.1, 0.05, 0.02}, change));
+  EXPECT_EQ(change, 1);
+  ASSERT_TRUE(sphere.windingNumberChange({-2, 0.3, 0.1}, {2, 0.05, 0.02}, change));
+  EXPECT_EQ(change, 0);
+}

@@ -16,11 +16,18 @@ namespace segmat {
 std::size_t
 orientFacesOutward(TriangleMesh& mesh, double weld_tolerance)
 {
+  if (mesh.faces.empty())
+    return 0;
+  return orientFacesOutward(mesh, weldPoints(mesh.vertices, weld_tolerance));
+}
+
+std::size_t
+orientFacesOutward(TriangleMesh& mesh, const std::vector<int>& rep)
+{
   const int nf = static_cast<int>(mesh.faces.size());
-  const int nv = static_cast<int>(mesh.vertices.size());
+  const int nv = static_cast<int>(std::min(mesh.vertices.size(), rep.size()));
   if (nf == 0)
     return 0;
-  const std::vector<int> rep = weldPoints(mesh.vertices, weld_tolerance);
   auto corner = [&](int f, int k) {
     const int v = mesh.faces[f][k];
     return (v >= 0 && v < nv) ? rep[v] : -1;

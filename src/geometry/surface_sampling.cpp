@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cstdint>
 #include <array>
 #include <cmath>
 
@@ -115,6 +116,123 @@ sampleSurface(const TriangleMesh& mesh, double max_spacing)
     }
   }
   return samples;
+}
+
+std::vector<int>
+thinPoints(const std::vector<Eigen::Vector3d>& points, double radius)
+{
+  std::vector<int> kept;
+  kept.reserve(points.size());
+  if (!(radius > 0.0) || !std::isfinite(radius)) {
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (points[i].allFinite())
+        kept.push_back(static_cast<int>(i));
+    return kept;
+  }
+  // Cells of size `radius` (a conflicting point is in the same or an adjacent cell), in a flat
+  // open-addressing table: cell key → first kept point, kept points chained through `next`.
+  std::size_t capacity = 64;
+  while (capacity < 2 * points.size())
+    capacity *= 2;
+  const std::uint64_t empty = ~std::uint64_t(0);
+  std::vector<std::uint64_t> keys(capacity, empty);
+  std::vector<int> heads(capacity, -1);
+  std::vector<int> next(points.size(), -1);
+  auto cellKey = [](std::int64_t x, std::int64_t y, std::int64_t z) {
+    // 21 bits per axis (cells are clamped, far-out points merely share edge cells).
+    auto clamp = [](std::int64_t v) {
+      return static_cast<std::uint64_t>(std::max<std::int64_t>(0, std::min<std::int64_t>(
+                                            (1 << 21) - 1, v + (1 << 20))));
+    };
+    return (clamp(x) << 42) | (clamp(y) << 21) | clamp(z);
+  };
+  auto slotOf = [&](std::uint64_t key) {
+    std::size_t slot = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & (capacity - 1);
+    while (keys[slot] != empty && keys[slot] != key)
+      slot = (slot + 1) & (capacity - 1);
+    return slot;
+  };
+  const double inv = 1.0 / radius, radius2 = radius * radius;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d& p = points[i];
+    if (!p.allFinite())
+      continue;
+    const std::int64_t cx = static_cast<std::int64_t>(std::floor(p.x() * inv));
+    const std::int64_t cy = static_cast<std::int64_t>(std::floor(p.y() * inv));
+    const std::int64_t cz = static_cast<std::int64_t>(std::floor(p.z() * inv));
+    bool free = true;
+    for (std::int64_t dx = -1; dx <= 1 && free; ++dx)
+      for (std::int64_t dy = -1; dy <= 1 && free; ++dy)
+        for (std::int64_t dz = -1; dz <= 1 && free; ++dz)
+          for (int j = heads[slotOf(cellKey(cx + dx, cy + dy, cz + dz))]; j >= 0; j = next[j])
+            if ((points[j] - p).squaredNorm() < radius2) {
+              free = false;
+              break;
+            }
+    if (free) {
+      const std::uint64_t key = cellKey(cx, cy, cz);
+      const std::size_t slot = slotOf(key);
+      keys[slot] = key;
+      next[i] = heads[slot];
+      heads[slot] = static_cast<int>(i);
+      kept.push_back(static_cast<int>(i));
+    }
+  }
+  return kept;
+}
+
+std::vector<int>
+thinPointsToCount(const std::vector<Eigen::Vector3d>& points, std::size_t max_count)
+{
+  std::vector<int> best = thinPoints(points, 0.0);
+  if (best.size() <= max_count || max_count == 0)
+    return best;
+  Eigen::Vector3d lo = points[best[0]], hi = lo;
+  for (int i : best) {
+    lo = lo.cwiseMin(points[i]);
+    hi = hi.cwiseMax(points[i]);
+  }
+  const double diagonal = (hi - lo).norm();
+  // First radius from the surface law count ∝ radius⁻²; then false position in log-log between
+  // the bracket ends (count(low) > max_count ≥ count(high)), kept off the ends so it cannot
+  // stall. A handful of passes; stops within 5 % below the target.
+  double low = 0.0, high = diagonal;
+  double low_count = static_cast<double>(best.size()), high_count = 1.0;
+  double radius = 0.5 * diagonal / std::sqrt(static_cast<double>(max_count));
+  bool have_high = false;
+  const double target = static_cast<double>(max_count) * 0.975;
+  for (int pass = 0; pass < 30; ++pass) {
+    std::vector<int> kept = thinPoints(points, radius);
+    const double count = static_cast<double>(kept.size());
+    if (kept.size() <= max_count) {
+      high = radius;
+      high_count = std::max(count, 1.0);
+      have_high = true;
+      best.swap(kept);
+      if (best.size() >= max_count - max_count / 20)
+        break;
+    }
+    else {
+      low = radius;
+      low_count = count;
+    }
+    if (high - low <= 1e-3 * high)
+      break;
+    if (!have_high) {
+      radius = std::min(high, radius * std::max(1.1, std::sqrt(count / target)));
+      continue;
+    }
+    if (low == 0.0) {
+      radius = radius * std::sqrt(count / target);
+      continue;
+    }
+    const double t = std::log(low_count / target) / std::log(low_count / high_count);
+    const double step = std::max(0.1, std::min(0.9, std::isfinite(t) ? t : 0.5));
+    radius = std::exp(std::log(low) + step * (std::log(high) - std::log(low)));
+  }
+  if (!have_high)
+    best = thinPoints(points, high);
+  return best;
 }
 
 } // namespace segmat

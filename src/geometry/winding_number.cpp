@@ -7,7 +7,11 @@
 
 #include <Eigen/Geometry>
 
+#include <segmat/geometry/weld_points.h>
+
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <cmath>
 
 #ifdef _OPENMP
@@ -40,30 +44,65 @@ triangleSolidAngle(const Eigen::Matrix3d& t, const Eigen::Vector3d& q)
 
 WindingNumber::WindingNumber(const TriangleMesh& input, bool fix_orientation)
 {
+  // Vertices at equal positions are one vertex for orientation, closedness and edge identity.
+  const std::vector<int> welded = weldPoints(input.vertices, 0.0);
   const TriangleMesh* mesh = &input;
   TriangleMesh oriented;
   if (fix_orientation) {
     oriented = input;
-    num_flipped_ = orientFacesOutward(oriented, 0.0);
+    num_flipped_ = orientFacesOutward(oriented, welded);
     mesh = &oriented;
   }
   const int nv = static_cast<int>(mesh->vertices.size());
   std::vector<Eigen::Matrix3d> triangles;
+  std::vector<Eigen::Vector3i> ids;
+  std::vector<std::array<int, 3>> directed; // (lo, hi, +1 lo→hi / -1 hi→lo) of every edge
   triangles.reserve(mesh->faces.size());
+  ids.reserve(mesh->faces.size());
+  directed.reserve(mesh->faces.size() * 3);
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
   for (const Eigen::Vector3i& f : mesh->faces) {
-    if (f.minCoeff() < 0 || f.maxCoeff() >= nv || f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
+    if (f.minCoeff() < 0 || f.maxCoeff() >= nv)
+      continue;
+    const Eigen::Vector3i id(welded[f[0]], welded[f[1]], welded[f[2]]);
+    if (id[0] == id[1] || id[1] == id[2] || id[0] == id[2])
       continue;
     Eigen::Matrix3d t;
     for (int k = 0; k < 3; ++k)
       t.col(k) = mesh->vertices[f[k]];
-    // Zero-area faces subtend no solid angle; non-finite ones would poison every query.
-    if (!t.allFinite() || (t.col(1) - t.col(0)).cross(t.col(2) - t.col(0)).squaredNorm() == 0.0)
+    if (!t.allFinite())
+      continue;
+    for (int k = 0; k < 3; ++k) {
+      const int a = id[k], b = id[(k + 1) % 3];
+      directed.push_back({std::min(a, b), std::max(a, b), a < b ? 1 : -1});
+      lo = lo.cwiseMin(t.col(k));
+      hi = hi.cwiseMax(t.col(k));
+    }
+    // Zero-area faces subtend no solid angle and cannot be crossed; they still count for
+    // closedness above.
+    if ((t.col(1) - t.col(0)).cross(t.col(2) - t.col(0)).squaredNorm() == 0.0)
       continue;
     triangles.push_back(t);
+    ids.push_back(id);
   }
   const int n = static_cast<int>(triangles.size());
   if (n == 0)
     return;
+  size_ = (hi - lo).norm();
+  std::sort(directed.begin(), directed.end());
+  closed_ = true;
+  for (std::size_t i = 0; i < directed.size() && closed_;) {
+    std::size_t j = i;
+    int balance = 0;
+    for (; j < directed.size() && directed[j][0] == directed[i][0] &&
+           directed[j][1] == directed[i][1];
+         ++j)
+      balance += directed[j][2];
+    closed_ = balance == 0;
+    i = j;
+  }
+
   std::vector<Eigen::Vector3d> centroids(n);
   std::vector<int> order(n);
   for (int i = 0; i < n; ++i) {
@@ -73,51 +112,84 @@ WindingNumber::WindingNumber(const TriangleMesh& input, bool fix_orientation)
   nodes_.reserve(static_cast<std::size_t>(4 * n / kLeafSize + 2));
   build(0, n, centroids, order);
   triangles_.resize(n);
-  for (int i = 0; i < n; ++i)
+  corner_ids_.resize(n);
+  for (int i = 0; i < n; ++i) {
     triangles_[i] = triangles[order[i]];
-  for (Node& node : nodes_)
-    computeMoments(node);
+    corner_ids_[i] = ids[order[i]];
+  }
+  computeMoments();
 }
 
 void
-WindingNumber::computeMoments(Node& node) const
+WindingNumber::computeMoments()
 {
-  // Each node sums its own face range: O(F log F) in total, no bottom-up bookkeeping.
-  double area_sum = 0.0;
-  Eigen::Vector3d weighted = Eigen::Vector3d::Zero(), centroid_sum = Eigen::Vector3d::Zero();
-  node.dipole.setZero();
-  for (int i = node.begin; i < node.end; ++i) {
-    const Eigen::Matrix3d& t = triangles_[i];
-    const Eigen::Vector3d area_vector = 0.5 * (t.col(1) - t.col(0)).cross(t.col(2) - t.col(0));
-    const double area = area_vector.norm();
-    const Eigen::Vector3d c = t.rowwise().mean();
-    node.dipole += area_vector;
-    weighted += area * c;
-    centroid_sum += c;
-    area_sum += area;
-  }
-  node.center = area_sum > 0.0 ? Eigen::Vector3d(weighted / area_sum)
-                               : Eigen::Vector3d(centroid_sum / (node.end - node.begin));
-  node.moment.setZero();
-  for (int k = 0; k < 3; ++k)
-    node.second[k].setZero();
-  node.radius2 = 0.0;
-  for (int i = node.begin; i < node.end; ++i) {
-    const Eigen::Matrix3d t = triangles_[i].colwise() - node.center;
-    const Eigen::Vector3d area_vector = 0.5 * (t.col(1) - t.col(0)).cross(t.col(2) - t.col(0));
-    const Eigen::Vector3d s = t.rowwise().sum();
-    // ∫_T x dA = A·centroid and ∫_T x xᵀ dA = A/12 (Σ_a v_a v_aᵀ + s sᵀ), s = Σ_a v_a.
-    node.moment += (s / 3.0) * area_vector.transpose();
-    const Eigen::Matrix3d quadratic = (t * t.transpose() + s * s.transpose()) / 12.0;
+  // Children come after their parent in `nodes_`, so a reverse sweep sees them first. Leaves sum
+  // their faces; inner nodes shift their children's moments to their own centre, O(F) in all.
+  std::vector<double> area(nodes_.size(), 0.0);
+  for (int id = static_cast<int>(nodes_.size()) - 1; id >= 0; --id) {
+    Node& node = nodes_[id];
+    node.dipole.setZero();
+    node.moment.setZero();
     for (int k = 0; k < 3; ++k)
-      node.second[k] += area_vector[k] * quadratic;
+      node.second[k].setZero();
+    if (node.right < 0) {
+      Eigen::Vector3d weighted = Eigen::Vector3d::Zero(), centroid_sum = Eigen::Vector3d::Zero();
+      for (int i = node.begin; i < node.end; ++i) {
+        const Eigen::Matrix3d& t = triangles_[i];
+        const Eigen::Vector3d area_vector =
+            0.5 * (t.col(1) - t.col(0)).cross(t.col(2) - t.col(0));
+        const Eigen::Vector3d c = t.rowwise().mean();
+        node.dipole += area_vector;
+        weighted += area_vector.norm() * c;
+        centroid_sum += c;
+        area[id] += area_vector.norm();
+      }
+      node.center = area[id] > 0.0 ? Eigen::Vector3d(weighted / area[id])
+                                   : Eigen::Vector3d(centroid_sum / (node.end - node.begin));
+      for (int i = node.begin; i < node.end; ++i) {
+        const Eigen::Matrix3d t = triangles_[i].colwise() - node.center;
+        const Eigen::Vector3d area_vector =
+            0.5 * (t.col(1) - t.col(0)).cross(t.col(2) - t.col(0));
+        const Eigen::Vector3d s = t.rowwise().sum();
+        // ∫_T x dA = A·centroid and ∫_T x xᵀ dA = A/12 (Σ_a v_a v_aᵀ + s sᵀ), s = Σ_a v_a.
+        node.moment += (s / 3.0) * area_vector.transpose();
+        const Eigen::Matrix3d quadratic = (t * t.transpose() + s * s.transpose()) / 12.0;
+        for (int k = 0; k < 3; ++k)
+          node.second[k] += area_vector[k] * quadratic;
+      }
+    }
+    else {
+      const int children[2] = {id + 1, node.right};
+      area[id] = area[children[0]] + area[children[1]];
+      node.center = area[id] > 0.0
+                        ? Eigen::Vector3d((area[children[0]] * nodes_[children[0]].center +
+                                           area[children[1]] * nodes_[children[1]].center) /
+                                          area[id])
+                        : Eigen::Vector3d(0.5 * (nodes_[children[0]].center +
+                                                 nodes_[children[1]].center));
+      for (int child : children) {
+        const Node& c = nodes_[child];
+        // With y = x − c' and δ = c' − p̃: ∫(y + δ) nᵀ = M' + δ N'ᵀ and
+        // ∫(y + δ)(y + δ)ᵀ n_k = S'_k + δ m'_kᵀ + m'_k δᵀ + δ δᵀ N'_k, m'_k = M'.col(k).
+        const Eigen::Vector3d delta = c.center - node.center;
+        node.dipole += c.dipole;
+        node.moment += c.moment + delta * c.dipole.transpose();
+        for (int k = 0; k < 3; ++k)
+          node.second[k] += c.second[k] + delta * c.moment.col(k).transpose() +
+                            c.moment.col(k) * delta.transpose() +
+                            c.dipole[k] * delta * delta.transpose();
+      }
+    }
+    // Exact bounding radius about the centre (a bound from the children would be looser and
+    // make every query visit more nodes).
+    node.radius2 = 0.0;
+    for (int i = node.begin; i < node.end; ++i)
+      for (int k = 0; k < 3; ++k)
+        node.radius2 = std::max(node.radius2, (triangles_[i].col(k) - node.center).squaredNorm());
     for (int k = 0; k < 3; ++k)
-      node.radius2 = std::max(node.radius2, t.col(k).squaredNorm());
+      node.second_trace[k] = node.second[k].trace();
+    node.second_diag = node.second[0].col(0) + node.second[1].col(1) + node.second[2].col(2);
   }
-  for (int k = 0; k < 3; ++k) {
-    node.second_trace[k] = node.second[k].trace();
-  }
-  node.second_diag = node.second[0].col(0) + node.second[1].col(1) + node.second[2].col(2);
 }
 
 int
@@ -202,6 +274,71 @@ WindingNumber::exact(const Eigen::Vector3d& q) const
   for (const Eigen::Matrix3d& t : triangles_)
     total += triangleSolidAngle(t, q);
   return total * kInvFourPi;
+}
+
+bool
+WindingNumber::windingNumberChange(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                                   int& change) const
+{
+  change = 0;
+  if (!closed_ || !from.allFinite() || !to.allFinite())
+    return false;
+  const Eigen::Vector3d d = to - from;
+  const double length2 = d.squaredNorm();
+  if (length2 == 0.0)
+    return true;
+  const double tolerance = 1e-10 * size_;
+  const double length = std::sqrt(length2);
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const int id = stack[--top];
+    const Node& node = nodes_[id];
+    // Skip nodes whose bounding ball the segment misses.
+    const double s = std::max(0.0, std::min(1.0, (node.center - from).dot(d) / length2));
+    if ((from + s * d - node.center).squaredNorm() > node.radius2)
+      continue;
+    if (node.right >= 0) {
+      stack[top++] = node.right;
+      stack[top++] = id + 1;
+      continue;
+    }
+    for (int i = node.begin; i < node.end; ++i) {
+      const Eigen::Matrix3d& t = triangles_[i];
+      const Eigen::Vector3d normal = (t.col(1) - t.col(0)).cross(t.col(2) - t.col(0));
+      const double normal_length = normal.norm();
+      // Signed distances of the end points to the face's plane.
+      const double dist_from = normal.dot(from - t.col(0)) / normal_length;
+      const double dist_to = normal.dot(to - t.col(0)) / normal_length;
+      if ((dist_from > tolerance && dist_to > tolerance) ||
+          (dist_from < -tolerance && dist_to < -tolerance))
+        continue;
+      // Side of the line through the segment for each edge, computed on the edge's corners in
+      // ascending welded-index order so that the two faces of an edge get the very same number.
+      int positive = 0, negative = 0; // edges the line clearly passes on one side of
+      for (int k = 0; k < 3; ++k) {
+        const int ka = k, kb = (k + 1) % 3;
+        const bool ascending = corner_ids_[i][ka] < corner_ids_[i][kb];
+        const Eigen::Vector3d& u = t.col(ascending ? ka : kb);
+        const Eigen::Vector3d& v = t.col(ascending ? kb : ka);
+        // |value| = |d| |v − u| × (distance between the two lines) × (sine of their angle).
+        const double value = d.cross(u - from).dot(v - from);
+        const double side = ascending ? value : -value;
+        const double margin = tolerance * length * (v - u).norm();
+        positive += side > margin;
+        negative += side < -margin;
+      }
+      if (positive > 0 && negative > 0)
+        continue; // the line misses the face
+      if (positive < 3 && negative < 3)
+        return false; // through (or next to) an edge or a corner
+      if (std::abs(dist_from) <= tolerance || std::abs(dist_to) <= tolerance)
+        return false; // an end point lies on the face
+      change += dist_from < 0.0 ? -1 : 1; // back → front leaves the inside
+    }
+  }
+  return true;
 }
 
 void

@@ -66,7 +66,9 @@ circumcentre(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Ve
 const int kEdgeCorners[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 } // namespace
 
-VoronoiMat::VoronoiMat() : max_spacing_(0.015), jitter_(1e-6), beta_(2.0), threads_(1) {}
+VoronoiMat::VoronoiMat()
+: max_spacing_(0.015), max_samples_(15000), jitter_(1e-6), beta_(2.0), threads_(1)
+{}
 
 bool
 VoronoiMat::compute(MedialMesh& output)
@@ -118,6 +120,12 @@ VoronoiMat::compute(MedialMesh& output)
   for (std::size_t i = 0; i < candidates.size(); ++i)
     if (representative[i] == static_cast<int>(i))
       samples_.push_back(candidates[i]);
+  if (max_samples_ > 0 && samples_.size() > max_samples_) {
+    std::vector<Eigen::Vector3d> thinned;
+    for (int i : thinPointsToCount(samples_, max_samples_))
+      thinned.push_back(samples_[i]);
+    samples_.swap(thinned);
+  }
   if (jitter_ > 0.0) {
     const double amplitude = jitter_ * diagonal;
     for (std::size_t i = 0; i < samples_.size(); ++i)
@@ -164,16 +172,61 @@ VoronoiMat::compute(MedialMesh& output)
     candidates_of.push_back(t);
     queries.push_back(centres[t]);
   }
-  std::vector<double> winding;
   WindingNumber winding_number(mesh);
   winding_number.setAccuracy(beta_);
-  winding_number.evaluate(queries, winding, threads_);
+  std::vector<char> inside(num_tets, 0);
+  if (winding_number.isClosed()) {
+    // A closed mesh has an integer winding number that changes only across faces: evaluate it at
+    // one circumcentre per connected group of candidate tetrahedra and carry it along the Voronoi
+    // edges (the segments between neighbouring circumcentres), counting the faces each crosses.
+    // Exact where the hierarchical evaluation is approximate, and far cheaper.
+    std::vector<char> is_candidate(num_tets, 0);
+    for (int t : candidates_of)
+      is_candidate[t] = 1;
+    const int unset = std::numeric_limits<int>::min();
+    std::vector<int> winding(num_tets, unset);
+    std::vector<int> queue;
+    queue.reserve(candidates_of.size());
+    for (int seed : candidates_of) {
+      if (winding[seed] != unset)
+        continue;
+      winding[seed] = static_cast<int>(std::lround(winding_number(centres[seed])));
+      ++statistics_.num_winding_evaluations;
+      queue.assign(1, seed);
+      for (std::size_t head = 0; head < queue.size(); ++head) {
+        const int t = queue[head];
+        for (int i = 0; i < 4; ++i) {
+          const int u = delaunay.neighbors[t][i];
+          if (u < 0 || !is_candidate[u] || winding[u] != unset)
+            continue;
+          int change = 0;
+          if (winding_number.windingNumberChange(centres[t], centres[u], change))
+            winding[u] = winding[t] + change;
+          else {
+            winding[u] = static_cast<int>(std::lround(winding_number(centres[u])));
+            ++statistics_.num_winding_evaluations;
+          }
+          queue.push_back(u);
+        }
+      }
+    }
+    for (int t : candidates_of)
+      inside[t] = winding[t] > 0;
+  }
+  else {
+    // Open or non-manifold-with-boundary input: the winding number is no longer piecewise
+    // constant, so evaluate it at every candidate.
+    std::vector<double> winding;
+    winding_number.evaluate(queries, winding, threads_);
+    statistics_.num_winding_evaluations = queries.size();
+    for (std::size_t i = 0; i < candidates_of.size(); ++i)
+      inside[candidates_of[i]] = winding[i] > 0.5;
+  }
   std::vector<int> vertex_of(num_tets, -1);
   std::vector<Eigen::Vector3d> mat_centres;
   std::vector<double> mat_radii;
-  for (std::size_t i = 0; i < candidates_of.size(); ++i)
-    if (winding[i] > 0.5) {
-      const int t = candidates_of[i];
+  for (int t : candidates_of)
+    if (inside[t]) {
       vertex_of[t] = static_cast<int>(mat_centres.size());
       mat_centres.push_back(centres[t]);
       mat_radii.push_back(radii[t]);

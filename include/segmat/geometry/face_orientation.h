@@ -7,6 +7,7 @@
 #include <segmat/geometry/triangle_mesh.h>
 
 #include <cstddef>
+#include <vector>
 
 namespace segmat {
 
@@ -30,5 +31,11 @@ namespace segmat {
  */
 std::size_t
 orientFacesOutward(TriangleMesh& mesh, double weld_tolerance = 0.0);
+
+/** \brief As above, with the vertex welding given: `representative[v]` is the vertex that v
+ * counts as (weldPoints()); its size must equal the vertex count.
+ */
+std::size_t
+orientFacesOutward(TriangleMesh& mesh, const std::vector<int>& representative);
 
 } // namespace segmat

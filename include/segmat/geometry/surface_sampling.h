@@ -33,6 +33,24 @@ namespace segmat {
 std::vector<Eigen::Vector3d>
 sampleSurface(const TriangleMesh& mesh, double max_spacing);
 
+/** \brief Greedy Poisson-disk thinning: visits the points in index order and keeps a point when
+ * no kept point lies within `radius` of it.
+ *
+ * Regions already sparser than `radius` keep every point; denser ones are thinned to a spacing of
+ * about `radius`. Deterministic; O(n) with a hash grid.
+ * \param[in] points the points (non-finite ones are dropped)
+ * \param[in] radius the exclusion radius; ≤ 0 keeps every finite point
+ * \return the indices of the kept points, ascending
+ */
+std::vector<int>
+thinPoints(const std::vector<Eigen::Vector3d>& points, double radius);
+
+/** \brief thinPoints() with a radius (searched to within 5 % of the count) that keeps at
+ * most `max_count` points; all points when there are no more than that.
+ */
+std::vector<int>
+thinPointsToCount(const std::vector<Eigen::Vector3d>& points, std::size_t max_count);
+
 /** \brief Total area of the mesh's faces. */
 double
 surfaceArea(const TriangleMesh& mesh);

@@ -88,6 +88,31 @@ public:
   evaluate(const std::vector<Eigen::Vector3d>& queries, std::vector<double>& values,
            unsigned threads = 1) const;
 
+  /** \brief True when the (oriented) mesh has no boundary: every edge, with vertices at equal
+   * positions taken as one, is walked as often in one direction as in the other. The winding
+   * number of such a mesh is an integer everywhere off the surface and changes only where a path
+   * crosses a face, which windingNumberChange() exploits.
+   */
+  bool
+  isClosed() const
+  {
+    return closed_;
+  }
+
+  /** \brief w(to) − w(from) for a closed mesh, counted as the signed number of faces the segment
+   * crosses (−1 for each face crossed from its back to its front), O(log F) for short segments.
+   *
+   * Edge tests are evaluated on the edge's corners in a fixed (welded index) order, so a segment
+   * through a shared edge is counted by exactly one of its faces. A segment that passes within
+   * 1e-10 × the mesh's size of an edge or vertex, or that ends on a face, is reported as uncertain.
+   * \param[in] from start point
+   * \param[in] to end point
+   * \param[out] change w(to) − w(from) when true is returned
+   * \return false when the mesh is not closed or the count is uncertain (evaluate w instead)
+   */
+  bool
+  windingNumberChange(const Eigen::Vector3d& from, const Eigen::Vector3d& to, int& change) const;
+
   /** \brief Number of faces that orientFacesOutward flipped in the constructor. */
   std::size_t
   numFlippedFaces() const
@@ -117,12 +142,15 @@ private:
   };
 
   void
-  computeMoments(Node& node) const;
+  computeMoments();
 
   int
   build(int begin, int end, std::vector<Eigen::Vector3d>& centroids, std::vector<int>& order);
 
   std::vector<Eigen::Matrix3d> triangles_; ///< corners as columns, in hierarchy order
+  std::vector<Eigen::Vector3i> corner_ids_; ///< welded vertex index of each corner
+  double size_ = 0.0;                        ///< bounding-box diagonal of the faces
+  bool closed_ = false;
   std::vector<Node> nodes_;
   double beta_ = 2.0;
   std::size_t num_flipped_ = 0;
