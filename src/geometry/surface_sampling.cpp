@@ -139,12 +139,11 @@ thinPoints(const std::vector<Eigen::Vector3d>& points, double radius)
   std::vector<int> heads(capacity, -1);
   std::vector<int> next(points.size(), -1);
   auto cellKey = [](std::int64_t x, std::int64_t y, std::int64_t z) {
-    // 21 bits per axis (cells are clamped, far-out points merely share edge cells).
-    auto clamp = [](std::int64_t v) {
-      return static_cast<std::uint64_t>(std::max<std::int64_t>(0, std::min<std::int64_t>(
-                                            (1 << 21) - 1, v + (1 << 20))));
-    };
-    return (clamp(x) << 42) | (clamp(y) << 21) | clamp(z);
+    // 21 bits per axis, wrapping around: cells that share a key only add candidates, which the
+    // distance test rejects, so the key need not be unique.
+    const std::uint64_t mask = (std::uint64_t(1) << 21) - 1;
+    return ((static_cast<std::uint64_t>(x) & mask) << 42) |
+           ((static_cast<std::uint64_t>(y) & mask) << 21) | (static_cast<std::uint64_t>(z) & mask);
   };
   auto slotOf = [&](std::uint64_t key) {
     std::size_t slot = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & (capacity - 1);
@@ -152,14 +151,25 @@ thinPoints(const std::vector<Eigen::Vector3d>& points, double radius)
       slot = (slot + 1) & (capacity - 1);
     return slot;
   };
+  // Cell coordinates from the lowest corner, clamped into int64 range.
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  bool any = false;
+  for (const Eigen::Vector3d& p : points)
+    if (p.allFinite()) {
+      origin = any ? origin.cwiseMin(p) : p;
+      any = true;
+    }
   const double inv = 1.0 / radius, radius2 = radius * radius;
+  auto cell = [&](double v, double o) {
+    return static_cast<std::int64_t>(std::min(4.0e18, std::floor((v - o) * inv)));
+  };
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Eigen::Vector3d& p = points[i];
     if (!p.allFinite())
       continue;
-    const std::int64_t cx = static_cast<std::int64_t>(std::floor(p.x() * inv));
-    const std::int64_t cy = static_cast<std::int64_t>(std::floor(p.y() * inv));
-    const std::int64_t cz = static_cast<std::int64_t>(std::floor(p.z() * inv));
+    const std::int64_t cx = cell(p.x(), origin.x());
+    const std::int64_t cy = cell(p.y(), origin.y());
+    const std::int64_t cz = cell(p.z(), origin.z());
     bool free = true;
     for (std::int64_t dx = -1; dx <= 1 && free; ++dx)
       for (std::int64_t dy = -1; dy <= 1 && free; ++dy)

@@ -46,16 +46,25 @@ weldPoints(const std::vector<Eigen::Vector3d>& points, double tolerance)
     return rep;
 
   using Cell = Eigen::Matrix<std::int64_t, 3, 1>;
-  // Exact welding hashes the coordinates themselves; otherwise cells of size `tolerance`, so a
-  // partner within tolerance is in the same or an adjacent cell. Cells are clamped to stay in
-  // int64 range for far-away points (they then merely share a cell and are compared exactly).
+  // Exact welding hashes the coordinates themselves; otherwise cells of size `tolerance` counted
+  // from the lowest corner (so far-off meshes do not overflow), and a partner within tolerance is
+  // in the same or an adjacent cell. Cells are clamped to stay in int64 range (clamped points
+  // merely share a cell and are compared exactly).
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  bool any = false;
+  for (const Eigen::Vector3d& p : points)
+    if (p.allFinite()) {
+      origin = any ? origin.cwiseMin(p) : p;
+      any = true;
+    }
   const double inv = tolerance > 0.0 ? 1.0 / tolerance : 0.0;
   const double limit = 4.0e18;
   auto cellOf = [&](const Eigen::Vector3d& p) {
     Cell c;
     for (int k = 0; k < 3; ++k) {
       if (tolerance > 0.0)
-        c[k] = static_cast<std::int64_t>(std::max(-limit, std::min(limit, std::floor(p[k] * inv))));
+        c[k] = static_cast<std::int64_t>(
+            std::max(-limit, std::min(limit, std::floor((p[k] - origin[k]) * inv))));
       else {
         double v = p[k] == 0.0 ? 0.0 : p[k]; // -0 and +0 are equal
         std::int64_t bits;
