@@ -7,9 +7,12 @@
 
 #include "util/synthetic_mesh.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <set>
 #include <cmath>
 #include <limits>
 
@@ -394,4 +397,139 @@ TEST(VoronoiMat, FarFromTheOrigin)
   if (vmat.compute(c))
     for (std::size_t v = 0; v < c.numVertices(); ++v)
       EXPECT_TRUE(std::isfinite(c.radii()[v]));
+}
+
+namespace {
+std::set<std::array<int, 4>>
+tetrahedronSet(const DelaunayTetrahedra& dt)
+{
+  std::set<std::array<int, 4>> set;
+  for (const auto& t : dt.tetrahedra) {
+    std::array<int, 4> key{t[0], t[1], t[2], t[3]};
+    std::sort(key.begin(), key.end());
+    set.insert(key);
+  }
+  return set;
+}
+
+double
+signedVolume(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector4i& t)
+{
+  return (p[t[1]] - p[t[0]]).dot((p[t[2]] - p[t[0]]).cross(p[t[3]] - p[t[0]])) / 6.0;
+}
+
+// A valid Delaunay tetrahedralisation: positive volumes summing to the hull volume, symmetric
+// neighbours across shared facets, and no point strictly inside any circumsphere.
+void
+expectValidDelaunay(const DelaunayTetrahedra& dt, double hull_volume)
+{
+  const auto& p = dt.points;
+  double volume = 0.0;
+  for (std::size_t t = 0; t < dt.tetrahedra.size(); ++t) {
+    const Eigen::Vector4i& v = dt.tetrahedra[t];
+    const double vol = signedVolume(p, v);
+    EXPECT_GT(vol, 0.0);
+    volume += vol;
+    for (int i = 0; i < 4; ++i) {
+      const int u = dt.neighbors[t][i];
+      if (u < 0)
+        continue;
+      EXPECT_TRUE((dt.neighbors[u].array() == static_cast<int>(t)).any());
+      EXPECT_FALSE((dt.tetrahedra[u].array() == v[i]).any());
+    }
+    // Empty circumsphere (checked in double with a small relative tolerance).
+    const Eigen::Vector3d b = p[v[1]] - p[v[0]], c = p[v[2]] - p[v[0]], d = p[v[3]] - p[v[0]];
+    const Eigen::Vector3d x = (b.squaredNorm() * c.cross(d) + c.squaredNorm() * d.cross(b) +
+                               d.squaredNorm() * b.cross(c)) /
+                              (2.0 * b.dot(c.cross(d)));
+    const Eigen::Vector3d centre = p[v[0]] + x;
+    const double r2 = x.squaredNorm();
+    for (const Eigen::Vector3d& q : p)
+      EXPECT_GE((q - centre).squaredNorm(), r2 * (1.0 - 1e-9));
+  }
+  EXPECT_NEAR(volume, hull_volume, 1e-6 * hull_volume); // snapping moves the hull by ~1e-7
+}
+} // namespace
+
+TEST(Delaunay3D, ExactMatchesQhullOnGenericPoints)
+{
+  // Points in general position have one Delaunay tetrahedralisation: both codes must find it.
+  std::vector<Eigen::Vector3d> points;
+  std::uint64_t x = 42;
+  auto next = [&x]() {
+    x = x * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(x >> 11) / 9007199254740992.0;
+  };
+  for (int i = 0; i < 3000; ++i)
+    points.emplace_back(next(), next(), 0.5 * next());
+  DelaunayTetrahedra exact, qhull;
+  std::string message;
+  ASSERT_TRUE(delaunayTetrahedralizeExact(points, exact, message)) << message;
+  ASSERT_TRUE(delaunayTetrahedralize(exact.points, qhull, message)) << message;
+  EXPECT_EQ(tetrahedronSet(exact), tetrahedronSet(qhull));
+  // Snapping moves a point by at most half a grid cell of the longest side (1 / 2^22).
+  for (std::size_t i = 0; i < points.size(); ++i)
+    EXPECT_LE((exact.points[i] - points[i]).cwiseAbs().maxCoeff(), 0.5 / 4194303.0 + 1e-15);
+}
+
+TEST(Delaunay3D, ExactHandlesDegenerateInput)
+{
+  // A 6×6×6 grid of the unit cube: every cell's 8 corners are co-spherical. Any valid Delaunay
+  // tetrahedralisation fills the cube (volume 1) with positive tetrahedra.
+  std::vector<Eigen::Vector3d> grid;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      for (int k = 0; k < 6; ++k)
+        grid.emplace_back(i / 5.0, j / 5.0, k / 5.0);
+  DelaunayTetrahedra dt;
+  std::string message;
+  ASSERT_TRUE(delaunayTetrahedralizeExact(grid, dt, message)) << message;
+  expectValidDelaunay(dt, 1.0);
+
+  // Co-spherical icosphere vertices, plus duplicates (used once) and the centre.
+  TriangleMesh sphere = test::icosphere(2);
+  std::vector<Eigen::Vector3d> points = sphere.vertices;
+  points.push_back(points[5]);
+  points.push_back(points[7]);
+  points.emplace_back(0, 0, 0);
+  ASSERT_TRUE(delaunayTetrahedralizeExact(points, dt, message)) << message;
+  expectValidDelaunay(dt, test::signedVolume(sphere));
+  for (const auto& t : dt.tetrahedra)
+    for (int k = 0; k < 4; ++k)
+      EXPECT_LT(t[k], static_cast<int>(sphere.vertices.size()) + 2 + 1)
+          << "a duplicate point was inserted";
+  for (const auto& t : dt.tetrahedra)
+    EXPECT_FALSE((t.array() == static_cast<int>(sphere.vertices.size())).any() ||
+                 (t.array() == static_cast<int>(sphere.vertices.size()) + 1).any());
+
+  // Failures: coplanar, too few, non-finite.
+  EXPECT_FALSE(delaunayTetrahedralizeExact({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 3, 0}},
+                                           dt, message));
+  EXPECT_FALSE(message.empty());
+  EXPECT_FALSE(delaunayTetrahedralizeExact({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, dt, message));
+  EXPECT_FALSE(delaunayTetrahedralizeExact(
+      {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, std::numeric_limits<double>::quiet_NaN()}}, dt,
+      message));
+}
+
+TEST(VoronoiMat, QhullAndExactDelaunayAgree)
+{
+  // Same samples, same jitter: nearly the same tetrahedra and medial mesh. Not identical: the
+  // capsule's rings are close to co-spherical, where qhull's merged-and-retriangulated facets
+  // (option Qt) and the exact code's snapped grid resolve ties differently.
+  const TriangleMesh capsule = test::capsule(0.5, 1.5, 32, 12, 8);
+  VoronoiMat a, b;
+  a.setInputMesh(std::make_shared<TriangleMesh>(capsule));
+  b.setInputMesh(std::make_shared<TriangleMesh>(capsule));
+  b.setDelaunayMethod(DelaunayMethod::Qhull);
+  MedialMesh ma, mb;
+  ASSERT_TRUE(a.compute(ma));
+  ASSERT_TRUE(b.compute(mb));
+  EXPECT_NEAR(static_cast<double>(a.getStatistics().num_tetrahedra),
+              static_cast<double>(b.getStatistics().num_tetrahedra),
+              0.005 * b.getStatistics().num_tetrahedra);
+  EXPECT_NEAR(static_cast<double>(ma.numVertices()), static_cast<double>(mb.numVertices()),
+              0.01 * mb.numVertices());
+  EXPECT_NEAR(static_cast<double>(ma.numTriangles()), static_cast<double>(mb.numTriangles()),
+              0.01 * mb.numTriangles());
 }

@@ -17,8 +17,7 @@ bool
 delaunayTetrahedralize(const std::vector<Eigen::Vector3d>& points, DelaunayTetrahedra& output,
                        std::string& error_message)
 {
-  output.tetrahedra.clear();
-  output.neighbors.clear();
+  output = DelaunayTetrahedra();
   error_message.clear();
   const int n = static_cast<int>(points.size());
   if (n < 4) {
@@ -75,12 +74,19 @@ delaunayTetrahedralize(const std::vector<Eigen::Vector3d>& points, DelaunayTetra
       if (t < 0)
         continue;
       const Eigen::Vector4i& mine = output.tetrahedra[t];
+      int k = 0;
       FOREACHneighbor_(facet)
       {
+        const int slot = k++;
         const int u = neighbor->id < tet_of_facet.size() ? tet_of_facet[neighbor->id] : -1;
         if (u < 0)
           continue;
-        // The neighbour shares three corners; it lies opposite the fourth.
+        // qhull: for a simplicial facet the k-th neighbour is opposite the k-th vertex.
+        if (facet->simplicial && slot < 4) {
+          output.neighbors[t][slot] = u;
+          continue;
+        }
+        // Otherwise: the neighbour shares three corners and lies opposite the fourth.
         const Eigen::Vector4i& theirs = output.tetrahedra[u];
         for (int i = 0; i < 4; ++i)
           if ((theirs.array() != mine[i]).all()) {
@@ -106,6 +112,8 @@ delaunayTetrahedralize(const std::vector<Eigen::Vector3d>& points, DelaunayTetra
     output.neighbors.clear();
   }
   std::free(error_buffer);
+  if (exit_code == 0)
+    output.points = points;
   return exit_code == 0;
 }
 

@@ -67,7 +67,12 @@ const int kEdgeCorners[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 } // namespace
 
 VoronoiMat::VoronoiMat()
-: max_spacing_(0.015), max_samples_(15000), jitter_(1e-6), beta_(2.0), threads_(1)
+: max_spacing_(0.015)
+, max_samples_(15000)
+, jitter_(1e-6)
+, delaunay_method_(DelaunayMethod::Exact)
+, beta_(2.0)
+, threads_(1)
 {}
 
 bool
@@ -143,12 +148,20 @@ VoronoiMat::compute(MedialMesh& output)
   // ---- Delaunay
   start = Clock::now();
   DelaunayTetrahedra delaunay;
-  std::string qhull_message;
-  if (!delaunayTetrahedralize(samples_, delaunay, qhull_message)) {
+  std::string message;
+  bool tetrahedralised = false;
+  if (delaunay_method_ == DelaunayMethod::Exact) {
+    tetrahedralised = delaunayTetrahedralizeExact(samples_, delaunay, message);
+    if (!tetrahedralised)
+      PCL_WARN("[segmat::VoronoiMat::compute] Exact Delaunay failed (%s); trying qhull.\n",
+               message.c_str());
+  }
+  if (!tetrahedralised && !delaunayTetrahedralize(samples_, delaunay, message)) {
     PCL_ERROR("[segmat::VoronoiMat::compute] Delaunay tetrahedralisation failed: %s\n",
-              qhull_message.c_str());
+              message.c_str());
     return false;
   }
+  samples_.swap(delaunay.points); // what the tetrahedra are Delaunay for
   const int num_tets = static_cast<int>(delaunay.tetrahedra.size());
   statistics_.num_tetrahedra = delaunay.tetrahedra.size();
   statistics_.seconds_delaunay = secondsSince(start);

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <segmat/geometry/delaunay_3d.h>
 #include <segmat/geometry/medial_mesh.h>
 #include <segmat/geometry/triangle_mesh.h>
 
@@ -41,7 +42,10 @@ struct VoronoiMatStatistics
  *    1e-9 of the bounding-box diagonal are merged; more than `max_sample_count` samples are
  *    thinned where they are densest (thinPointsToCount()); each sample is moved by a seeded,
  *    index-hashed jitter of `jitter` × diagonal so that grid-like CAD input cannot stall qhull.
- * 2. 3D Delaunay tetrahedralisation with qhull (`d Qt Qbb Qz`, reentrant libqhull_r).
+ * 2. 3D Delaunay tetrahedralisation: by default the exact incremental code
+ *    (delaunayTetrahedralizeExact(), samples snapped to a 2^22 grid, 3–5× faster than qhull and
+ *    the same tetrahedra on generic input); optionally qhull (`d Qt Qbb Qz`, libqhull_r). If the
+ *    exact code fails, qhull is tried.
  * 3. A tetrahedron is inside when its circumcentre lies in the mesh's bounding box and has a
  *    generalised winding number above 0.5 (WindingNumber, robust to small holes and mixed
  *    orientation; Q-MAT's CGAL code used a point-in-polyhedron test, reference-facts §8.1).
@@ -142,6 +146,20 @@ public:
     return jitter_;
   }
 
+  /** \brief The Delaunay code (default DelaunayMethod::Exact). */
+  void
+  setDelaunayMethod(DelaunayMethod method)
+  {
+    delaunay_method_ = method;
+  }
+
+  /** \brief The Delaunay code. */
+  DelaunayMethod
+  getDelaunayMethod() const
+  {
+    return delaunay_method_;
+  }
+
   /** \brief Accuracy β of the hierarchical winding number (default 2; see WindingNumber). */
   void
   setWindingNumberAccuracy(double beta)
@@ -188,7 +206,9 @@ public:
     return statistics_;
   }
 
-  /** \brief The surface samples of the last compute() call, after deduplication and jitter. */
+  /** \brief The surface samples of the last compute() call, after deduplication, thinning,
+   * jitter and (exact Delaunay) grid snapping: the points the tetrahedralisation is Delaunay for.
+   */
   const std::vector<Eigen::Vector3d>&
   getSamples() const
   {
@@ -200,6 +220,7 @@ private:
   double max_spacing_;
   std::size_t max_samples_;
   double jitter_;
+  DelaunayMethod delaunay_method_;
   double beta_;
   unsigned threads_;
   VoronoiMatStatistics statistics_;
