@@ -118,6 +118,15 @@ WindingNumber::WindingNumber(const TriangleMesh& input, bool fix_orientation)
     corner_ids_[i] = ids[order[i]];
   }
   computeMoments();
+  boxes_.resize(nodes_.size());
+  for (std::size_t id = 0; id < nodes_.size(); ++id) {
+    Box& box = boxes_[id];
+    box.lo = box.hi = triangles_[nodes_[id].begin].col(0);
+    for (int i = nodes_[id].begin; i < nodes_[id].end; ++i) {
+      box.lo = box.lo.cwiseMin(triangles_[i].rowwise().minCoeff());
+      box.hi = box.hi.cwiseMax(triangles_[i].rowwise().maxCoeff());
+    }
+  }
 }
 
 void
@@ -289,15 +298,31 @@ WindingNumber::windingNumberChange(const Eigen::Vector3d& from, const Eigen::Vec
     return true;
   const double tolerance = 1e-10 * size_;
   const double length = std::sqrt(length2);
+  // Boxes are widened by the tolerance so that near misses still reach the exact tests below.
+  const Eigen::Vector3d seg_lo = from.cwiseMin(to).array() - tolerance;
+  const Eigen::Vector3d seg_hi = from.cwiseMax(to).array() + tolerance;
   int stack[128];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const int id = stack[--top];
     const Node& node = nodes_[id];
-    // Skip nodes whose bounding ball the segment misses.
-    const double s = std::max(0.0, std::min(1.0, (node.center - from).dot(d) / length2));
-    if ((from + s * d - node.center).squaredNorm() > node.radius2)
+    const Box& box = boxes_[id];
+    // Skip nodes whose box misses the segment's box, or that the segment misses (slab test).
+    if ((box.lo.array() > seg_hi.array()).any() || (box.hi.array() < seg_lo.array()).any())
+      continue;
+    double t_min = 0.0, t_max = 1.0;
+    for (int k = 0; k < 3 && t_min <= t_max; ++k) {
+      if (d[k] == 0.0)
+        continue; // inside the slab already (the box test above)
+      double t0 = (box.lo[k] - tolerance - from[k]) / d[k];
+      double t1 = (box.hi[k] + tolerance - from[k]) / d[k];
+      if (t0 > t1)
+        std::swap(t0, t1);
+      t_min = std::max(t_min, t0);
+      t_max = std::min(t_max, t1);
+    }
+    if (t_min > t_max)
       continue;
     if (node.right >= 0) {
       stack[top++] = node.right;

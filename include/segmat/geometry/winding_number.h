@@ -147,6 +147,14 @@ private:
   int
   build(int begin, int end, std::vector<Eigen::Vector3d>& centroids, std::vector<int>& order);
 
+  /** Axis-aligned box of a node, kept apart from the moments so that segment queries touch
+   * little memory. */
+  struct Box
+  {
+    Eigen::Vector3d lo, hi;
+  };
+
+  std::vector<Box> boxes_;                 ///< per node, same indices as nodes_
   std::vector<Eigen::Matrix3d> triangles_; ///< corners as columns, in hierarchy order
   std::vector<Eigen::Vector3i> corner_ids_; ///< welded vertex index of each corner
   double size_ = 0.0;                        ///< bounding-box diagonal of the faces
