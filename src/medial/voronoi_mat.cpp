@@ -68,7 +68,7 @@ const int kEdgeCorners[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
 VoronoiMat::VoronoiMat()
 : max_spacing_(0.015)
-, max_samples_(15000)
+, max_samples_(12000)
 , jitter_(1e-6)
 , delaunay_method_(DelaunayMethod::Exact)
 , beta_(2.0)

@@ -78,7 +78,7 @@ public:
   using Ptr = std::shared_ptr<VoronoiMat>;
   using ConstPtr = std::shared_ptr<const VoronoiMat>;
 
-  /** \brief Defaults: max spacing 0.015 × diagonal, at most 15000 samples, jitter 1e-6 ×
+  /** \brief Defaults: max spacing 0.015 × diagonal, at most 12000 samples, jitter 1e-6 ×
    * diagonal, winding-number accuracy β = 2, one thread. */
   VoronoiMat();
 
@@ -112,11 +112,11 @@ public:
     return max_spacing_;
   }
 
-  /** \brief Largest number of surface samples (default 15000; 0: no limit). Denser samplings
+  /** \brief Largest number of surface samples (default 12000; 0: no limit). Denser samplings
    * are thinned by greedy Poisson-disk elimination (thinPointsToCount()), mesh vertices having
    * priority over fill points: sparse regions keep every sample, only the densest are thinned.
-   * The Delaunay step costs about 13 µs per sample and the medial mesh has about 3.4 vertices
-   * per sample, so this bounds the time of this step and of the simplification after it.
+   * The whole step costs about 13 µs per sample and the medial mesh has about 3.4 vertices per
+   * sample, so this bounds the time of this step and of the simplification after it.
    */
   void
   setMaxSampleCount(std::size_t count)
