@@ -4,6 +4,8 @@
  */
 #include <segmat/geometry/delaunay_3d.h>
 
+#include "point_bounds.h"
+
 extern "C" {
 #include <libqhull_r/qhull_ra.h>
 }
@@ -17,19 +19,11 @@ bool
 delaunayTetrahedralize(const std::vector<Eigen::Vector3d>& points, DelaunayTetrahedra& output,
                        std::string& error_message)
 {
-  output = DelaunayTetrahedra();
-  error_message.clear();
-  const int n = static_cast<int>(points.size());
-  if (n < 4) {
-    error_message = "fewer than 4 points";
+  if (!detail::startDelaunay(points, output, error_message))
     return false;
-  }
+  const int n = static_cast<int>(points.size());
   std::vector<coordT> coords(static_cast<std::size_t>(n) * 3);
   for (int i = 0; i < n; ++i) {
-    if (!points[i].allFinite()) {
-      error_message = "non-finite point " + std::to_string(i);
-      return false;
-    }
     for (int k = 0; k < 3; ++k)
       coords[3 * i + k] = points[i][k];
   }

@@ -16,6 +16,8 @@
 // pseudo-random face order.
 #include <segmat/geometry/delaunay_3d.h>
 
+#include "point_bounds.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -370,23 +372,12 @@ bool
 delaunayTetrahedralizeExact(const std::vector<Eigen::Vector3d>& points, DelaunayTetrahedra& output,
                             std::string& error_message)
 {
-  output = DelaunayTetrahedra();
-  error_message.clear();
-  const int n = static_cast<int>(points.size());
-  if (n < 4) {
-    error_message = "fewer than 4 points";
+  if (!detail::startDelaunay(points, output, error_message))
     return false;
-  }
-  Eigen::Vector3d lo = points[0], hi = points[0];
-  for (int i = 0; i < n; ++i) {
-    if (!points[i].allFinite()) {
-      error_message = "non-finite point " + std::to_string(i);
-      return false;
-    }
-    lo = lo.cwiseMin(points[i]);
-    hi = hi.cwiseMax(points[i]);
-  }
-  const double extent = (hi - lo).maxCoeff();
+  const int n = static_cast<int>(points.size());
+  const Eigen::AlignedBox3d box = detail::finiteBounds(points);
+  const Eigen::Vector3d lo = box.min();
+  const double extent = box.sizes().maxCoeff();
   if (!(extent > 0.0)) {
     error_message = "all points are equal";
     return false;

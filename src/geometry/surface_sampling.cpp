@@ -4,6 +4,8 @@
  */
 #include <segmat/geometry/surface_sampling.h>
 
+#include "point_bounds.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -152,13 +154,7 @@ thinPoints(const std::vector<Eigen::Vector3d>& points, double radius)
     return slot;
   };
   // Cell coordinates from the lowest corner, clamped into int64 range.
-  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
-  bool any = false;
-  for (const Eigen::Vector3d& p : points)
-    if (p.allFinite()) {
-      origin = any ? origin.cwiseMin(p) : p;
-      any = true;
-    }
+  const Eigen::Vector3d origin = detail::lowestCorner(points);
   const double inv = 1.0 / radius, radius2 = radius * radius;
   auto cell = [&](double v, double o) {
     return static_cast<std::int64_t>(std::min(4.0e18, std::floor((v - o) * inv)));
@@ -197,12 +193,7 @@ thinPointsToCount(const std::vector<Eigen::Vector3d>& points, std::size_t max_co
   std::vector<int> best = thinPoints(points, 0.0);
   if (best.size() <= max_count || max_count == 0)
     return best;
-  Eigen::Vector3d lo = points[best[0]], hi = lo;
-  for (int i : best) {
-    lo = lo.cwiseMin(points[i]);
-    hi = hi.cwiseMax(points[i]);
-  }
-  const double diagonal = (hi - lo).norm();
+  const double diagonal = detail::finiteBounds(points).diagonal().norm();
   // First radius from the surface law count ∝ radius⁻²; then false position in log-log between
   // the bracket ends (count(low) > max_count ≥ count(high)), kept off the ends so it cannot
   // stall. A handful of passes; stops within 5 % below the target.

@@ -4,6 +4,8 @@
  */
 #include <segmat/geometry/weld_points.h>
 
+#include "point_bounds.h"
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -50,13 +52,7 @@ weldPoints(const std::vector<Eigen::Vector3d>& points, double tolerance)
   // from the lowest corner (so far-off meshes do not overflow), and a partner within tolerance is
   // in the same or an adjacent cell. Cells are clamped to stay in int64 range (clamped points
   // merely share a cell and are compared exactly).
-  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
-  bool any = false;
-  for (const Eigen::Vector3d& p : points)
-    if (p.allFinite()) {
-      origin = any ? origin.cwiseMin(p) : p;
-      any = true;
-    }
+  const Eigen::Vector3d origin = detail::lowestCorner(points);
   const double inv = tolerance > 0.0 ? 1.0 / tolerance : 0.0;
   const double limit = 4.0e18;
   auto cellOf = [&](const Eigen::Vector3d& p) {
