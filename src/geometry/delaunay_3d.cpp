@@ -10,6 +10,7 @@ extern "C" {
 #include <libqhull_r/qhull_ra.h>
 }
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -31,7 +32,11 @@ delaunayTetrahedralize(const std::vector<Eigen::Vector3d>& points, DelaunayTetra
   // qhull reports through a FILE*: collect it in memory instead of spamming stderr.
   char* error_buffer = nullptr;
   std::size_t error_size = 0;
+#if defined(__unix__) || defined(__APPLE__)
   FILE* error_file = open_memstream(&error_buffer, &error_size);
+#else
+  FILE* error_file = std::tmpfile(); // read back below
+#endif
   qhT qh_qh;
   qhT* qh = &qh_qh;
   qh_zero(qh, error_file);
@@ -93,7 +98,24 @@ delaunayTetrahedralize(const std::vector<Eigen::Vector3d>& points, DelaunayTetra
   qh_freeqhull(qh, !qh_ALL);
   int current_long = 0, total_long = 0;
   qh_memfreeshort(qh, &current_long, &total_long);
-  std::fclose(error_file);
+#if !(defined(__unix__) || defined(__APPLE__))
+  std::string captured;
+  if (error_file) {
+    std::rewind(error_file);
+    char chunk[256];
+    std::size_t got;
+    while ((got = std::fread(chunk, 1, sizeof(chunk), error_file)) > 0)
+      captured.append(chunk, got);
+  }
+  error_buffer = static_cast<char*>(std::malloc(captured.size() + 1));
+  if (error_buffer) {
+    std::copy(captured.begin(), captured.end(), error_buffer);
+    error_buffer[captured.size()] = '\0';
+    error_size = captured.size();
+  }
+#endif
+  if (error_file)
+    std::fclose(error_file);
   if (exit_code != 0) {
     std::string text(error_buffer ? error_buffer : "", error_size);
     // Keep the first non-empty line: "QH6154 qhull precision error: initial simplex is flat..."

@@ -23,6 +23,8 @@
 #include <cstdint>
 #include <numeric>
 
+#ifdef __SIZEOF_INT128__
+
 namespace segmat {
 namespace {
 using i64 = std::int64_t;
@@ -446,3 +448,18 @@ delaunayTetrahedralizeExact(const std::vector<Eigen::Vector3d>& points, Delaunay
 }
 
 } // namespace segmat
+
+#else // no 128-bit integers (e.g. MSVC): callers fall back to qhull
+
+namespace segmat {
+bool
+delaunayTetrahedralizeExact(const std::vector<Eigen::Vector3d>& points, DelaunayTetrahedra& output,
+                            std::string& error_message)
+{
+  if (detail::startDelaunay(points, output, error_message))
+    error_message = "the exact Delaunay code needs a compiler with 128-bit integers";
+  return false;
+}
+} // namespace segmat
+
+#endif

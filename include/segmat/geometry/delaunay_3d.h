@@ -56,7 +56,8 @@ delaunayTetrahedralize(const std::vector<Eigen::Vector3d>& points, DelaunayTetra
  * in-sphere conflicts), with no flat tetrahedra. Points that snap together are inserted once
  * (the later ones are in no tetrahedron). Insertion in BRIO order (Morton-sorted rounds), point
  * location by a deterministic visibility walk; about 3–5 times faster than qhull on surface
- * samples, with the same tetrahedra on input in general position.
+ * samples, with the same tetrahedra on input in general position. Needs a compiler with 128-bit
+ * integers (GCC, Clang); elsewhere it returns false (VoronoiMat then uses qhull).
  * \param[in] points the points (at least 4 not coplanar, all finite)
  * \param[out] output the tetrahedra, neighbours (-1 on the hull) and snapped points
  * \param[out] error_message why false was returned
