@@ -5,6 +5,8 @@
 #include <segmat/geometry/face_orientation.h>
 #include <segmat/geometry/weld_points.h>
 
+#include "edge_records.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -48,11 +50,13 @@ orientFacesOutward(TriangleMesh& mesh, const std::vector<int>& rep)
       records.push_back({std::min(a, b), std::max(a, b), f, a < b ? 1 : 0});
     }
   }
-  std::sort(records.begin(), records.end());
+  detail::sortEdgeRecords(records, nv);
 
   // Manifold edges only: link (f, g, same) where `same` says whether the two faces walk the edge
   // in the same direction, i.e. need opposite flip states.
-  std::vector<std::vector<std::array<int, 2>>> links(nf);
+  // At most three links per face (one per side): flat arrays, no per-face allocation.
+  std::vector<std::array<int, 2>> links(static_cast<std::size_t>(nf) * 3);
+  std::vector<unsigned char> num_links(nf, 0);
   for (std::size_t i = 0; i < records.size();) {
     std::size_t j = i;
     while (j < records.size() && records[j][0] == records[i][0] && records[j][1] == records[i][1])
@@ -60,8 +64,8 @@ orientFacesOutward(TriangleMesh& mesh, const std::vector<int>& rep)
     if (j - i == 2 && records[i][2] != records[i + 1][2]) {
       const int f = records[i][2], g = records[i + 1][2];
       const int same = records[i][3] == records[i + 1][3] ? 1 : 0;
-      links[f].push_back({g, same});
-      links[g].push_back({f, same});
+      links[3 * f + num_links[f]++] = {g, same};
+      links[3 * g + num_links[g]++] = {f, same};
     }
     i = j;
   }
@@ -82,7 +86,8 @@ orientFacesOutward(TriangleMesh& mesh, const std::vector<int>& rep)
       const int f = queue.front();
       queue.pop_front();
       members.push_back(f);
-      for (const auto& link : links[f]) {
+      for (int l = 0; l < num_links[f]; ++l) {
+        const auto& link = links[3 * f + l];
         const int g = link[0];
         if (component[g] >= 0)
           continue;

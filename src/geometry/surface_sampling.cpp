@@ -4,6 +4,7 @@
  */
 #include <segmat/geometry/surface_sampling.h>
 
+#include "edge_records.h"
 #include "point_bounds.h"
 
 #include <Eigen/Geometry>
@@ -56,7 +57,7 @@ sampleSurface(const TriangleMesh& mesh, double max_spacing)
   if (!(h > 0.0) || !std::isfinite(h))
     return samples;
 
-  std::sort(edges.begin(), edges.end());
+  detail::sortEdgeRecords(edges, static_cast<int>(mesh.vertices.size()));
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   for (const auto& e : edges) {
     const Eigen::Vector3d& a = mesh.vertices[e[0]];

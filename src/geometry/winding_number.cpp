@@ -9,6 +9,8 @@
 
 #include <segmat/geometry/weld_points.h>
 
+#include "edge_records.h"
+
 #include <algorithm>
 #include <array>
 #include <limits>
@@ -90,7 +92,7 @@ WindingNumber::WindingNumber(const TriangleMesh& input, bool fix_orientation)
   if (n == 0)
     return;
   size_ = (hi - lo).norm();
-  std::sort(directed.begin(), directed.end());
+  detail::sortEdgeRecords(directed, nv);
   closed_ = true;
   for (std::size_t i = 0; i < directed.size() && closed_;) {
     std::size_t j = i;
