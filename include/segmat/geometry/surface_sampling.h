@@ -45,7 +45,7 @@ sampleSurface(const TriangleMesh& mesh, double max_spacing);
 std::vector<int>
 thinPoints(const std::vector<Eigen::Vector3d>& points, double radius);
 
-/** \brief thinPoints() with a radius (searched to within 5 % of the count) that keeps at
+/** \brief thinPoints() with a radius (searched to within 15 % of the count) that keeps at
  * most `max_count` points; all points when there are no more than that.
  */
 std::vector<int>
