@@ -334,7 +334,7 @@ TEST(SurfaceSampling, ThinningKeepsSpacingAndCount)
   const TriangleMesh sphere = test::icosphere(5); // 10242 vertices
   const std::vector<int> kept = thinPointsToCount(sphere.vertices, 3000);
   EXPECT_LE(kept.size(), 3000u);
-  EXPECT_GE(kept.size(), 2850u);
+  EXPECT_GE(kept.size(), 2550u); // the search stops within 15 % below the cap
 }
 
 TEST(VoronoiMat, SampleLimitThinsDenseMeshes)
@@ -345,7 +345,7 @@ TEST(VoronoiMat, SampleLimitThinsDenseMeshes)
   MedialMesh mat;
   ASSERT_TRUE(vmat.compute(mat));
   EXPECT_LE(vmat.getStatistics().num_samples, 3000u);
-  EXPECT_GE(vmat.getStatistics().num_samples, 2850u);
+  EXPECT_GE(vmat.getStatistics().num_samples, 2550u);
   for (std::size_t v = 0; v < mat.numVertices(); ++v)
     EXPECT_LT(mat.centers()[v].norm(), 1.0);
 }
