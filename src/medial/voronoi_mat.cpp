@@ -64,38 +64,18 @@ circumcentre(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Ve
 
 // Local corner pairs of a tetrahedron's six edges.
 const int kEdgeCorners[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-} // namespace
 
-VoronoiMat::VoronoiMat()
-: max_spacing_(0.015)
-, max_samples_(12000)
-, jitter_(1e-6)
-, delaunay_method_(DelaunayMethod::Exact)
-, beta_(2.0)
-, threads_(1)
-{}
-
+/** Checks that faces index existing, finite vertices and returns the box of the used vertices
+ * (empty with a PCL_ERROR otherwise). */
 bool
-VoronoiMat::compute(MedialMesh& output)
+usedVertexBounds(const TriangleMesh& mesh, Eigen::AlignedBox3d& bounds)
 {
-  output = MedialMesh();
-  statistics_ = VoronoiMatStatistics();
-  samples_.clear();
-  if (!mesh_) {
-    PCL_ERROR("[segmat::VoronoiMat::compute] No input mesh set.\n");
-    return false;
-  }
-  const TriangleMesh& mesh = *mesh_;
-  auto start = Clock::now();
-
-  // ---- validation and sampling
+  bounds.setEmpty();
   if (mesh.faces.empty()) {
     PCL_ERROR("[segmat::VoronoiMat::compute] The input mesh has no faces.\n");
     return false;
   }
   const int nv = static_cast<int>(mesh.vertices.size());
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d hi = -lo;
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     const Eigen::Vector3i& face = mesh.faces[f];
     if (face.minCoeff() < 0 || face.maxCoeff() >= nv) {
@@ -109,148 +89,91 @@ VoronoiMat::compute(MedialMesh& output)
                   face[k]);
         return false;
       }
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
+      bounds.extend(p);
     }
   }
-  const double diagonal = (hi - lo).norm();
+  const double diagonal = bounds.diagonal().norm();
   if (!(diagonal > 0.0) || !std::isfinite(diagonal)) {
     PCL_ERROR("[segmat::VoronoiMat::compute] The input mesh has no extent.\n");
     return false;
   }
-  const double spacing = max_spacing_ > 0.0 ? max_spacing_ * diagonal : 0.0;
-  std::vector<Eigen::Vector3d> candidates = sampleSurface(mesh, spacing);
-  const std::vector<int> representative = weldPoints(candidates, 1e-9 * diagonal);
-  samples_.reserve(candidates.size());
-  for (std::size_t i = 0; i < candidates.size(); ++i)
-    if (representative[i] == static_cast<int>(i))
-      samples_.push_back(candidates[i]);
-  if (max_samples_ > 0 && samples_.size() > max_samples_) {
-    std::vector<Eigen::Vector3d> thinned;
-    for (int i : thinPointsToCount(samples_, max_samples_))
-      thinned.push_back(samples_[i]);
-    samples_.swap(thinned);
-  }
-  if (jitter_ > 0.0) {
-    const double amplitude = jitter_ * diagonal;
-    for (std::size_t i = 0; i < samples_.size(); ++i)
-      for (int k = 0; k < 3; ++k)
-        samples_[i][k] += amplitude * hashToUnit(3 * static_cast<std::uint64_t>(i) + k);
-  }
-  statistics_.num_samples = samples_.size();
-  if (samples_.size() < 4) {
-    PCL_ERROR("[segmat::VoronoiMat::compute] Only %zu distinct surface samples (need 4).\n",
-              samples_.size());
-    return false;
-  }
-  statistics_.seconds_sampling = secondsSince(start);
+  return true;
+}
 
-  // ---- Delaunay
-  start = Clock::now();
-  DelaunayTetrahedra delaunay;
-  std::string message;
-  bool tetrahedralised = false;
-  if (delaunay_method_ == DelaunayMethod::Exact) {
-    tetrahedralised = delaunayTetrahedralizeExact(samples_, delaunay, message);
-    if (!tetrahedralised)
-      PCL_WARN("[segmat::VoronoiMat::compute] Exact Delaunay failed (%s); trying qhull.\n",
-               message.c_str());
-  }
-  if (!tetrahedralised && !delaunayTetrahedralize(samples_, delaunay, message)) {
-    PCL_ERROR("[segmat::VoronoiMat::compute] Delaunay tetrahedralisation failed: %s\n",
-              message.c_str());
-    return false;
-  }
-  samples_.swap(delaunay.points); // what the tetrahedra are Delaunay for
+/** Marks the tetrahedra whose circumcentre is inside the shape (step 3 of VoronoiMat).
+ * \param[in] candidates tetrahedra with a finite circumcentre inside the bounding box
+ * \param[out] evaluations how many winding numbers were evaluated
+ */
+std::vector<char>
+classifyTetrahedra(const TriangleMesh& mesh, const DelaunayTetrahedra& delaunay,
+                   const std::vector<Eigen::Vector3d>& centres, const std::vector<int>& candidates,
+                   double beta, unsigned threads, std::size_t& evaluations)
+{
   const int num_tets = static_cast<int>(delaunay.tetrahedra.size());
-  statistics_.num_tetrahedra = delaunay.tetrahedra.size();
-  statistics_.seconds_delaunay = secondsSince(start);
-
-  // ---- inside test
-  start = Clock::now();
-  std::vector<Eigen::Vector3d> centres(num_tets);
-  std::vector<double> radii(num_tets, 0.0);
-  std::vector<int> candidates_of;
-  std::vector<Eigen::Vector3d> queries;
-  candidates_of.reserve(num_tets);
-  queries.reserve(num_tets);
-  for (int t = 0; t < num_tets; ++t) {
-    const Eigen::Vector4i& v = delaunay.tetrahedra[t];
-    if (!circumcentre(samples_[v[0]], samples_[v[1]], samples_[v[2]], samples_[v[3]], centres[t],
-                      radii[t]))
-      continue;
-    // Q-MAT keeps a circumcentre only inside the bounding box; it is also a cheap pre-filter.
-    if ((centres[t].array() < lo.array()).any() || (centres[t].array() > hi.array()).any())
-      continue;
-    candidates_of.push_back(t);
-    queries.push_back(centres[t]);
-  }
   WindingNumber winding_number(mesh);
-  winding_number.setAccuracy(beta_);
+  winding_number.setAccuracy(beta);
   std::vector<char> inside(num_tets, 0);
-  if (winding_number.isClosed()) {
-    // A closed mesh has an integer winding number that changes only across faces: evaluate it at
-    // one circumcentre per connected group of candidate tetrahedra and carry it along the Voronoi
-    // edges (the segments between neighbouring circumcentres), counting the faces each crosses.
-    // Exact where the hierarchical evaluation is approximate, and far cheaper.
-    std::vector<char> is_candidate(num_tets, 0);
-    for (int t : candidates_of)
-      is_candidate[t] = 1;
-    const int unset = std::numeric_limits<int>::min();
-    std::vector<int> winding(num_tets, unset);
-    std::vector<int> queue;
-    queue.reserve(candidates_of.size());
-    for (int seed : candidates_of) {
-      if (winding[seed] != unset)
-        continue;
-      winding[seed] = static_cast<int>(std::lround(winding_number(centres[seed])));
-      ++statistics_.num_winding_evaluations;
-      queue.assign(1, seed);
-      for (std::size_t head = 0; head < queue.size(); ++head) {
-        const int t = queue[head];
-        for (int i = 0; i < 4; ++i) {
-          const int u = delaunay.neighbors[t][i];
-          if (u < 0 || !is_candidate[u] || winding[u] != unset)
-            continue;
-          int change = 0;
-          if (winding_number.windingNumberChange(centres[t], centres[u], change))
-            winding[u] = winding[t] + change;
-          else {
-            winding[u] = static_cast<int>(std::lround(winding_number(centres[u])));
-            ++statistics_.num_winding_evaluations;
-          }
-          queue.push_back(u);
-        }
+  evaluations = 0;
+  if (!winding_number.isClosed()) {
+    // Open input: the winding number is not piecewise constant, so evaluate it everywhere.
+    std::vector<Eigen::Vector3d> queries;
+    queries.reserve(candidates.size());
+    for (int t : candidates)
+      queries.push_back(centres[t]);
+    std::vector<double> winding;
+    winding_number.evaluate(queries, winding, threads);
+    evaluations = queries.size();
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+      inside[candidates[i]] = winding[i] > 0.5;
+    return inside;
+  }
+  // A closed mesh has an integer winding number that changes only across faces: evaluate it at
+  // one circumcentre per connected group of candidate tetrahedra and carry it along the Voronoi
+  // edges (the segments between neighbouring circumcentres), counting the faces each crosses.
+  // Exact where the hierarchical evaluation is approximate, and far cheaper.
+  std::vector<char> is_candidate(num_tets, 0);
+  for (int t : candidates)
+    is_candidate[t] = 1;
+  const int unset = std::numeric_limits<int>::min();
+  std::vector<int> winding(num_tets, unset);
+  auto evaluate = [&](int t) {
+    ++evaluations;
+    return static_cast<int>(std::lround(winding_number(centres[t])));
+  };
+  std::vector<int> queue;
+  queue.reserve(candidates.size());
+  for (int seed : candidates) {
+    if (winding[seed] != unset)
+      continue;
+    winding[seed] = evaluate(seed);
+    queue.assign(1, seed);
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const int t = queue[head];
+      for (int i = 0; i < 4; ++i) {
+        const int u = delaunay.neighbors[t][i];
+        if (u < 0 || !is_candidate[u] || winding[u] != unset)
+          continue;
+        int change = 0;
+        winding[u] = winding_number.windingNumberChange(centres[t], centres[u], change)
+                         ? winding[t] + change
+                         : evaluate(u); // the crossing count was uncertain
+        queue.push_back(u);
       }
     }
-    for (int t : candidates_of)
-      inside[t] = winding[t] > 0;
   }
-  else {
-    // Open or non-manifold-with-boundary input: the winding number is no longer piecewise
-    // constant, so evaluate it at every candidate.
-    std::vector<double> winding;
-    winding_number.evaluate(queries, winding, threads_);
-    statistics_.num_winding_evaluations = queries.size();
-    for (std::size_t i = 0; i < candidates_of.size(); ++i)
-      inside[candidates_of[i]] = winding[i] > 0.5;
-  }
-  std::vector<int> vertex_of(num_tets, -1);
-  std::vector<Eigen::Vector3d> mat_centres;
-  std::vector<double> mat_radii;
-  for (int t : candidates_of)
-    if (inside[t]) {
-      vertex_of[t] = static_cast<int>(mat_centres.size());
-      mat_centres.push_back(centres[t]);
-      mat_radii.push_back(radii[t]);
-    }
-  statistics_.num_inside = mat_centres.size();
-  statistics_.seconds_inside = secondsSince(start);
+  for (int t : candidates)
+    inside[t] = winding[t] > 0;
+  return inside;
+}
 
-  // ---- assembly
-  start = Clock::now();
-  std::vector<Eigen::Vector2i> edges;
-  std::vector<Eigen::Vector3i> triangles;
+/** Voronoi edges and fan-triangulated Voronoi faces between inside tetrahedra (step 4).
+ * \param[in] vertex_of medial vertex of each tetrahedron, -1 when it is not inside
+ */
+void
+voronoiEdgesAndFaces(const DelaunayTetrahedra& delaunay, const std::vector<int>& vertex_of,
+                     std::vector<Eigen::Vector2i>& edges, std::vector<Eigen::Vector3i>& triangles)
+{
+  const int num_tets = static_cast<int>(delaunay.tetrahedra.size());
   std::vector<int> ring;
   for (int t = 0; t < num_tets; ++t) {
     if (vertex_of[t] < 0)
@@ -267,13 +190,10 @@ VoronoiMat::compute(MedialMesh& output)
     for (const auto& pair : kEdgeCorners) {
       const int a = corners[pair[0]], b = corners[pair[1]];
       int entry = -1; // the corner (not a, b) through whose opposite facet we leave
-      for (int k = 0; k < 4; ++k)
-        if (k != pair[0] && k != pair[1]) {
+      for (int k = 0; k < 4 && entry < 0; ++k)
+        if (k != pair[0] && k != pair[1])
           entry = corners[k];
-          break;
-        }
-      ring.clear();
-      ring.push_back(t);
+      ring.assign(1, t);
       int current = t;
       bool closed = false;
       while (static_cast<int>(ring.size()) <= num_tets) {
@@ -308,6 +228,131 @@ VoronoiMat::compute(MedialMesh& output)
       }
     }
   }
+}
+} // namespace
+
+VoronoiMat::VoronoiMat()
+: max_spacing_(0.015)
+, max_samples_(12000)
+, jitter_(1e-6)
+, delaunay_method_(DelaunayMethod::Exact)
+, beta_(2.0)
+, threads_(1)
+{}
+
+bool
+VoronoiMat::sample(const TriangleMesh& mesh, double diagonal)
+{
+  const double spacing = max_spacing_ > 0.0 ? max_spacing_ * diagonal : 0.0;
+  const std::vector<Eigen::Vector3d> candidates = sampleSurface(mesh, spacing);
+  const std::vector<int> representative = weldPoints(candidates, 1e-9 * diagonal);
+  samples_.clear();
+  samples_.reserve(candidates.size());
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (representative[i] == static_cast<int>(i))
+      samples_.push_back(candidates[i]);
+  if (max_samples_ > 0 && samples_.size() > max_samples_) {
+    std::vector<Eigen::Vector3d> thinned;
+    for (int i : thinPointsToCount(samples_, max_samples_))
+      thinned.push_back(samples_[i]);
+    samples_.swap(thinned);
+  }
+  if (jitter_ > 0.0) {
+    const double amplitude = jitter_ * diagonal;
+    for (std::size_t i = 0; i < samples_.size(); ++i)
+      for (int k = 0; k < 3; ++k)
+        samples_[i][k] += amplitude * hashToUnit(3 * static_cast<std::uint64_t>(i) + k);
+  }
+  statistics_.num_samples = samples_.size();
+  if (samples_.size() < 4) {
+    PCL_ERROR("[segmat::VoronoiMat::compute] Only %zu distinct surface samples (need 4).\n",
+              samples_.size());
+    return false;
+  }
+  return true;
+}
+
+bool
+VoronoiMat::tetrahedralize(DelaunayTetrahedra& delaunay)
+{
+  std::string message;
+  bool done = false;
+  if (delaunay_method_ == DelaunayMethod::Exact) {
+    done = delaunayTetrahedralizeExact(samples_, delaunay, message);
+    if (!done)
+      PCL_WARN("[segmat::VoronoiMat::compute] Exact Delaunay failed (%s); trying qhull.\n",
+               message.c_str());
+  }
+  if (!done && !delaunayTetrahedralize(samples_, delaunay, message)) {
+    PCL_ERROR("[segmat::VoronoiMat::compute] Delaunay tetrahedralisation failed: %s\n",
+              message.c_str());
+    return false;
+  }
+  samples_.swap(delaunay.points); // what the tetrahedra are Delaunay for
+  statistics_.num_tetrahedra = delaunay.tetrahedra.size();
+  return true;
+}
+
+bool
+VoronoiMat::compute(MedialMesh& output)
+{
+  output = MedialMesh();
+  statistics_ = VoronoiMatStatistics();
+  samples_.clear();
+  if (!mesh_) {
+    PCL_ERROR("[segmat::VoronoiMat::compute] No input mesh set.\n");
+    return false;
+  }
+  const TriangleMesh& mesh = *mesh_;
+
+  // 1. samples
+  auto start = Clock::now();
+  Eigen::AlignedBox3d bounds;
+  if (!usedVertexBounds(mesh, bounds) || !sample(mesh, bounds.diagonal().norm()))
+    return false;
+  statistics_.seconds_sampling = secondsSince(start);
+
+  // 2. Delaunay
+  start = Clock::now();
+  DelaunayTetrahedra delaunay;
+  if (!tetrahedralize(delaunay))
+    return false;
+  statistics_.seconds_delaunay = secondsSince(start);
+
+  // 3. inside test on the circumcentres; Q-MAT keeps a circumcentre only inside the bounding
+  // box, which is also a cheap pre-filter.
+  start = Clock::now();
+  const int num_tets = static_cast<int>(delaunay.tetrahedra.size());
+  std::vector<Eigen::Vector3d> centres(num_tets);
+  std::vector<double> radii(num_tets, 0.0);
+  std::vector<int> candidates;
+  candidates.reserve(num_tets);
+  for (int t = 0; t < num_tets; ++t) {
+    const Eigen::Vector4i& v = delaunay.tetrahedra[t];
+    if (circumcentre(samples_[v[0]], samples_[v[1]], samples_[v[2]], samples_[v[3]], centres[t],
+                     radii[t]) &&
+        bounds.contains(centres[t]))
+      candidates.push_back(t);
+  }
+  const std::vector<char> inside = classifyTetrahedra(
+      mesh, delaunay, centres, candidates, beta_, threads_, statistics_.num_winding_evaluations);
+  std::vector<int> vertex_of(num_tets, -1);
+  std::vector<Eigen::Vector3d> mat_centres;
+  std::vector<double> mat_radii;
+  for (int t : candidates)
+    if (inside[t]) {
+      vertex_of[t] = static_cast<int>(mat_centres.size());
+      mat_centres.push_back(centres[t]);
+      mat_radii.push_back(radii[t]);
+    }
+  statistics_.num_inside = mat_centres.size();
+  statistics_.seconds_inside = secondsSince(start);
+
+  // 4. medial edges and triangles
+  start = Clock::now();
+  std::vector<Eigen::Vector2i> edges;
+  std::vector<Eigen::Vector3i> triangles;
+  voronoiEdgesAndFaces(delaunay, vertex_of, edges, triangles);
   try {
     output = MedialMesh(std::move(mat_centres), std::move(mat_radii), edges, triangles);
   }

@@ -216,6 +216,14 @@ public:
   }
 
 private:
+  /** Step 1: fills samples_ (and the sample count); false with a PCL_ERROR when < 4. */
+  bool
+  sample(const TriangleMesh& mesh, double diagonal);
+
+  /** Step 2: tetrahedralises samples_ and replaces them by the points it is Delaunay for. */
+  bool
+  tetrahedralize(DelaunayTetrahedra& delaunay);
+
   TriangleMesh::ConstPtr mesh_;
   double max_spacing_;
   std::size_t max_samples_;
