@@ -1,6 +1,7 @@
 // Per-stage timings of the initial Voronoi medial mesh (segmat::VoronoiMat).
 //
-//   bench_voronoi_mat [--runs N] [--spacing S] [--max-samples M] [--beta B] [--threads T] [--qhull] PATH...
+//   bench_voronoi_mat [--runs N] [--spacing S] [--max-samples M] [--beta B] [--threads T]
+//                     [--qhull] PATH...
 //
 // PATH is an OFF file or a folder of OFF files (e.g. ../shared/data/psb-dev/off). For every mesh
 // it prints the sample count, tetrahedra, inside tetrahedra, medial vertices/edges/triangles, the

@@ -533,3 +533,43 @@ TEST(VoronoiMat, QhullAndExactDelaunayAgree)
   EXPECT_NEAR(static_cast<double>(ma.numTriangles()), static_cast<double>(mb.numTriangles()),
               0.01 * mb.numTriangles());
 }
+
+TEST(VoronoiMat, UsersMeshesUnweldedMixedAndOverlapping)
+{
+  // An unwelded "triangle soup" with every other face flipped gives the same medial mesh as the
+  // clean shape: duplicates merge in sampling, the winding number welds and re-orients. (A bumpy
+  // sphere, so that the samples are in general position and, without jitter, their Delaunay
+  // tetrahedralisation does not depend on the order of the samples.)
+  TriangleMesh sphere = test::icosphere(3);
+  for (std::size_t v = 0; v < sphere.vertices.size(); ++v)
+    sphere.vertices[v] *= 1.0 + 0.05 * std::sin(12.9898 * static_cast<double>(v));
+  TriangleMesh soup;
+  for (std::size_t f = 0; f < sphere.faces.size(); ++f) {
+    Eigen::Vector3i g;
+    for (int k = 0; k < 3; ++k) {
+      g[k] = static_cast<int>(soup.vertices.size());
+      soup.vertices.push_back(sphere.vertices[sphere.faces[f][k]]);
+    }
+    if (f % 2)
+      std::swap(g[1], g[2]);
+    soup.faces.push_back(g);
+  }
+  const MedialMesh clean = computeMat(sphere, 0.015, 0.0), messy = computeMat(soup, 0.015, 0.0);
+  ASSERT_GT(clean.numVertices(), 0u);
+  EXPECT_EQ(messy.numVertices(), clean.numVertices());
+  EXPECT_EQ(messy.numTriangles(), clean.numTriangles());
+
+  // Two overlapping closed spheres (a self-intersecting union, winding number 2 in the overlap):
+  // every centre lies in the union and some lie in the overlap.
+  const TriangleMesh both =
+      test::merge({test::icosphere(3, 1.0, {0, 0, 0}), test::icosphere(3, 1.0, {1.2, 0, 0})});
+  const MedialMesh mat = computeMat(both);
+  ASSERT_GT(mat.numVertices(), 0u);
+  std::size_t in_overlap = 0;
+  for (const Eigen::Vector3d& c : mat.centers()) {
+    const bool in_a = c.norm() < 1.0, in_b = (c - Eigen::Vector3d(1.2, 0, 0)).norm() < 1.0;
+    EXPECT_TRUE(in_a || in_b) << c.transpose();
+    in_overlap += in_a && in_b;
+  }
+  EXPECT_GT(in_overlap, 0u);
+}

@@ -212,9 +212,9 @@ TEST(WindingNumber, EmptyAndNonFiniteInput)
 
 TEST(WeldPoints, ExactAndTolerance)
 {
-  const std::vector<Eigen::Vector3d> p{{0, 0, 0}, {1, 0, 0}, {0, 0, 0},  {1, 1e-10, 0},
-                                       {-0.0, 0, 0}, {std::numeric_limits<double>::quiet_NaN(), 0, 0},
-                                       {2, 0, 0}};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<Eigen::Vector3d> p{{0, 0, 0},    {1, 0, 0},   {0, 0, 0}, {1, 1e-10, 0},
+                                       {-0.0, 0, 0}, {nan, 0, 0}, {2, 0, 0}};
   EXPECT_EQ(weldPoints(p, 0.0), (std::vector<int>{0, 1, 0, 3, 0, 5, 6}));
   EXPECT_EQ(weldPoints(p, 1e-9), (std::vector<int>{0, 1, 0, 1, 0, 5, 6}));
   // Greedy, not transitive: (2,0,0) is 2 from representative 0, so it stays on its own.

@@ -281,7 +281,8 @@ Triangulation::insert(int p)
       const std::uint64_t key =
           (static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::min(a, c))) << 32) |
           static_cast<std::uint32_t>(std::max(a, c));
-      std::size_t slot = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & (capacity - 1);
+      std::size_t slot =
+          static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & (capacity - 1);
       while (open_faces_[slot].first != key && open_faces_[slot].first != ~std::uint64_t(0))
         slot = (slot + 1) & (capacity - 1);
       if (open_faces_[slot].first == key) {

@@ -16,6 +16,14 @@
 
 namespace segmat {
 namespace {
+/** Lexicographic order of positions: fill points are made from geometry alone, so that vertex
+ * numbering and face orientation (an unwelded or flipped copy of the mesh) do not change them. */
+bool
+lexLess(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+  return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+}
+
 bool
 validFace(const TriangleMesh& mesh, const Eigen::Vector3i& f)
 {
@@ -60,8 +68,9 @@ sampleSurface(const TriangleMesh& mesh, double max_spacing)
   detail::sortEdgeRecords(edges, static_cast<int>(mesh.vertices.size()));
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   for (const auto& e : edges) {
-    const Eigen::Vector3d& a = mesh.vertices[e[0]];
-    const Eigen::Vector3d& b = mesh.vertices[e[1]];
+    const bool forward = !lexLess(mesh.vertices[e[1]], mesh.vertices[e[0]]);
+    const Eigen::Vector3d& a = mesh.vertices[forward ? e[0] : e[1]];
+    const Eigen::Vector3d& b = mesh.vertices[forward ? e[1] : e[0]];
     const double length = (b - a).norm();
     if (!(length > h))
       continue;
@@ -77,26 +86,37 @@ sampleSurface(const TriangleMesh& mesh, double max_spacing)
   for (const Eigen::Vector3i& f : mesh.faces) {
     if (!validFace(mesh, f))
       continue;
-    int longest = 0;
+    // The lattice frame: the longest side (ties: the lexicographically smaller one), from its
+    // lexicographically smaller end; independent of corner order and orientation.
+    const Eigen::Vector3d* corner[3] = {&mesh.vertices[f[0]], &mesh.vertices[f[1]],
+                                        &mesh.vertices[f[2]]};
+    const Eigen::Vector3d *a = nullptr, *b = nullptr, *c = nullptr;
     double longest_length = -1.0;
     for (int k = 0; k < 3; ++k) {
-      const double l = (mesh.vertices[f[(k + 1) % 3]] - mesh.vertices[f[k]]).norm();
-      if (l > longest_length)
-        longest_length = l, longest = k;
+      const Eigen::Vector3d* p = corner[k];
+      const Eigen::Vector3d* q = corner[(k + 1) % 3];
+      if (lexLess(*q, *p))
+        std::swap(p, q);
+      const double l = (*q - *p).norm();
+      const bool tie_wins =
+          l == longest_length && (lexLess(*p, *a) || (*p == *a && lexLess(*q, *b)));
+      if (l > longest_length || tie_wins) {
+        longest_length = l;
+        a = p;
+        b = q;
+        c = corner[(k + 2) % 3];
+      }
     }
-    const Eigen::Vector3d& a = mesh.vertices[f[longest]];
-    const Eigen::Vector3d& b = mesh.vertices[f[(longest + 1) % 3]];
-    const Eigen::Vector3d& c = mesh.vertices[f[(longest + 2) % 3]];
     const double base = longest_length;
     if (!(base > 0.0) || !std::isfinite(base))
       continue;
-    const Eigen::Vector3d u = (b - a) / base;
-    const Eigen::Vector3d w = (c - a) - u * u.dot(c - a);
+    const Eigen::Vector3d u = (*b - *a) / base;
+    const Eigen::Vector3d w = (*c - *a) - u * u.dot(*c - *a);
     const double height = w.norm();
     if (!(height > 2.0 * margin))
       continue; // a sliver: its sides are sampled already
     const Eigen::Vector3d v = w / height;
-    const double cx = u.dot(c - a); // apex (cx, height), base from (0,0) to (base,0)
+    const double cx = u.dot(*c - *a); // apex (cx, height), base from (0,0) to (base,0)
     // Inward-negative unit normals of the two slanted sides through the apex (cx, height).
     const Eigen::Vector2d n_left = Eigen::Vector2d(-height, cx).normalized();         // side a→c
     const Eigen::Vector2d n_right = Eigen::Vector2d(height, base - cx).normalized(); // side b→c
@@ -114,7 +134,7 @@ sampleSurface(const TriangleMesh& mesh, double max_spacing)
         const double d_left = -n_left.dot(p);
         const double d_right = -n_right.dot(p - Eigen::Vector2d(base, 0.0));
         if (d_left >= margin && d_right >= margin)
-          samples.push_back(a + x * u + y * v);
+          samples.push_back(*a + x * u + y * v);
       }
     }
   }
@@ -149,7 +169,8 @@ thinPoints(const std::vector<Eigen::Vector3d>& points, double radius)
            ((static_cast<std::uint64_t>(y) & mask) << 21) | (static_cast<std::uint64_t>(z) & mask);
   };
   auto slotOf = [&](std::uint64_t key) {
-    std::size_t slot = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & (capacity - 1);
+    std::size_t slot =
+        static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & (capacity - 1);
     while (keys[slot] != empty && keys[slot] != key)
       slot = (slot + 1) & (capacity - 1);
     return slot;

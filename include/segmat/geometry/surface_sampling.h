@@ -25,7 +25,9 @@ namespace segmat {
  *  - Each triangle gets the points of a triangular lattice of spacing h in its plane (rows parallel
  *    to its longest edge) that are at least h/2 from its three sides, so long slivers get none.
  * The output is: used vertices in index order, edge points in (smaller, larger vertex) order, then
- * interior points in face order. Nothing is random and nothing is deduplicated here.
+ * interior points in face order. Fill points are computed from positions only, so an unwelded or
+ * re-oriented copy of the mesh gets the same points. Nothing is random and nothing is
+ * deduplicated here.
  * \param[in] mesh the surface; faces with an out-of-range index are skipped
  * \param[in] max_spacing h in mesh units; 0, negative or infinite adds no points
  * \return the samples
