@@ -1,11 +1,16 @@
 // Princeton Segmentation Benchmark metrics: hand-worked cases on a small strip, then the
 // fixture table of /work/shared/notes/psb-metrics.md on the psb-dev models.
+#include <segmat/evaluation/psb_benchmark.h>
 #include <segmat/evaluation/psb_metrics.h>
+#include <segmat/io/off.h>
+
+#include <util/temp_files.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numeric>
+#include <string>
 #include <vector>
 
 using namespace segmat;
@@ -329,4 +334,98 @@ TEST(PsbMetrics, BadInputIsRejectedWithoutThrowing)
   // The convenience function reports failure as an empty score.
   EXPECT_EQ(evaluateSegmentation(strip(), kP, {0}).count, 0);
   EXPECT_EQ(evaluateSegmentation(strip(), kP, kQ).count, 1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Fixture of psb-metrics.md: on every psb-dev model, human #0 (N_0.seg) as the prediction against
+// all of that model's humans (itself included). Columns CD HD Rm Rf RI GCE LCE GCEf; the table is
+// printed to 6 decimals by an implementation that matches the official binary, so each cell must
+// agree within half a unit of the 6th decimal (plus rounding slack).
+
+namespace {
+
+struct FixtureRow
+{
+  int model;
+  int humans;
+  double v[8]; // CD HD Rm Rf RI GCE LCE GCEf
+};
+
+const FixtureRow kFixture[] = {
+    {1, 16, {0.209811, 0.179187, 0.199841, 0.158533, 0.082521, 0.157431, 0.097272, 0.163540}},
+    {6, 14, {0.173953, 0.166617, 0.116735, 0.216498, 0.092515, 0.153507, 0.079908, 0.172002}},
+    {21, 15, {0.282548, 0.053240, 0.009601, 0.096880, 0.101855, 0.020142, 0.014434, 0.019424}},
+    {26, 10, {0.029161, 0.004446, 0.004446, 0.004446, 0.014523, 0.011886, 0.008629, 0.013759}},
+    {41, 12, {0.153034, 0.052655, 0.064890, 0.040419, 0.052917, 0.011585, 0.009087, 0.011118}},
+    {46, 10, {0.104704, 0.039772, 0.040875, 0.038669, 0.035045, 0.020988, 0.012970, 0.019733}},
+    {61, 14, {0.092230, 0.171290, 0.092536, 0.250043, 0.185037, 0.121133, 0.066884, 0.120172}},
+    {66, 12, {0.084553, 0.088467, 0.068521, 0.108412, 0.063057, 0.079575, 0.052120, 0.077600}},
+    {81, 12, {0.047989, 0.034371, 0.019759, 0.048982, 0.009630, 0.033857, 0.023937, 0.033356}},
+    {86, 11, {0.057848, 0.040692, 0.017945, 0.063440, 0.009900, 0.032200, 0.021838, 0.030476}},
+    {101, 15, {0.079962, 0.035968, 0.025455, 0.046480, 0.033217, 0.032201, 0.020747, 0.030784}},
+    {106, 9, {0.062060, 0.029295, 0.032990, 0.025600, 0.026476, 0.044572, 0.025439, 0.042374}},
+    {121, 9, {0.031028, 0.020716, 0.014963, 0.026468, 0.014628, 0.025666, 0.019090, 0.024403}},
+    {126, 13, {0.068173, 0.029519, 0.021662, 0.037375, 0.014128, 0.035172, 0.021392, 0.034845}},
+    {141, 14, {0.380040, 0.066591, 0.057988, 0.075194, 0.131901, 0.024906, 0.019274, 0.025172}},
+    {146, 10, {0.301613, 0.115855, 0.015048, 0.216662, 0.176139, 0.027877, 0.022460, 0.028363}},
+    {161, 14, {0.025236, 0.024351, 0.031282, 0.017420, 0.027222, 0.033665, 0.025370, 0.033197}},
+    {166, 13, {0.111403, 0.059289, 0.085050, 0.033528, 0.069246, 0.059771, 0.030845, 0.058600}},
+    {181, 13, {0.184726, 0.129246, 0.150045, 0.108448, 0.122876, 0.109327, 0.061083, 0.108060}},
+    {186, 12, {0.184407, 0.203685, 0.201992, 0.205378, 0.131398, 0.230552, 0.134888, 0.229855}},
+    {201, 13, {0.074642, 0.058317, 0.063649, 0.052986, 0.037907, 0.069629, 0.046878, 0.069421}},
+    {206, 11, {0.065701, 0.066661, 0.072442, 0.060881, 0.032334, 0.081273, 0.056516, 0.080888}},
+    {221, 11, {0.115119, 0.053240, 0.015586, 0.090894, 0.116400, 0.029386, 0.020854, 0.028227}},
+    {226, 9, {0.172575, 0.196821, 0.303915, 0.089727, 0.281501, 0.090799, 0.062700, 0.088044}},
+    {241, 12, {0.067304, 0.046079, 0.045825, 0.046332, 0.036450, 0.061610, 0.038343, 0.060192}},
+    {246, 7, {0.042613, 0.044756, 0.057271, 0.032240, 0.024486, 0.050346, 0.034316, 0.049354}},
+    {281, 6, {0.217744, 0.220779, 0.017122, 0.424436, 0.094745, 0.033772, 0.031519, 0.033819}},
+    {286, 10, {0.088749, 0.110969, 0.081043, 0.140895, 0.054309, 0.077324, 0.056919, 0.077277}},
+    {301, 10, {0.086158, 0.099105, 0.133321, 0.064889, 0.096073, 0.094805, 0.063052, 0.098307}},
+    {306, 10, {0.229034, 0.100047, 0.096547, 0.103546, 0.122448, 0.090844, 0.062074, 0.090845}},
+    {321, 11, {0.019663, 0.005687, 0.001895, 0.009479, 0.008745, 0.004903, 0.003034, 0.005872}},
+    {326, 12, {0.078398, 0.028211, 0.000051, 0.056371, 0.051252, 0.000211, 0.000176, 0.000327}},
+    {341, 14, {0.097256, 0.037024, 0.020985, 0.053063, 0.030793, 0.000045, 0.000045, 0.000043}},
+    {346, 11, {0.004161, 0.001707, 0.000767, 0.002647, 0.004949, 0.002280, 0.001570, 0.003080}},
+    {361, 10, {0.102298, 0.091442, 0.082126, 0.100758, 0.101461, 0.104391, 0.061937, 0.107363}},
+    {366, 12, {0.368879, 0.099168, 0.079987, 0.118349, 0.189705, 0.052608, 0.034604, 0.053048}},
+    {381, 13, {0.227528, 0.148168, 0.076387, 0.219950, 0.230584, 0.110879, 0.064588, 0.111067}},
+    {386, 13, {0.161622, 0.168762, 0.142306, 0.195218, 0.120071, 0.191348, 0.110848, 0.186140}},
+};
+const double kFixtureMean[8] = {0.128524, 0.082163, 0.067443, 0.096883,
+                                0.079696, 0.063486, 0.039938, 0.063688};
+const char* const kColumns[8] = {"CD", "HD", "Rm", "Rf", "RI", "GCE", "LCE", "GCEf"};
+
+const std::string kPsbDev = std::string(SEGMAT_SHARED_DATA_DIR) + "/psb-dev";
+
+} // namespace
+
+TEST(PsbMetricsFixture, HumanZeroAgainstAllHumansOnPsbDev)
+{
+  if (!test::fileExists(kPsbDev + "/off/1.off"))
+    GTEST_SKIP() << "no " << kPsbDev;
+  const double tolerance = 6e-7;
+  std::vector<PsbScores> per_model;
+  for (const FixtureRow& row : kFixture) {
+    SCOPED_TRACE("model " + std::to_string(row.model));
+    const PsbEvaluator evaluator(io::loadOff(kPsbDev + "/off/" + std::to_string(row.model) + ".off"));
+    ASSERT_TRUE(evaluator.ready());
+    const std::vector<std::string> paths = psbHumanSegmentationPaths(kPsbDev, row.model);
+    ASSERT_EQ(static_cast<int>(paths.size()), row.humans);
+    std::vector<std::vector<int>> humans;
+    for (const std::string& p : paths)
+      humans.push_back(loadLabelsFor(evaluator, p));
+    PsbScores s;
+    ASSERT_TRUE(evaluator.scoreAgainstAll(humans[0], humans, s));
+    EXPECT_EQ(s.count, row.humans);
+    EXPECT_EQ(s.cd_count, row.humans);
+    const double got[8] = {s.CD, s.HD, s.Rm, s.Rf, s.RI, s.GCE, s.LCE, s.GCEf};
+    for (int c = 0; c < 8; ++c)
+      EXPECT_NEAR(got[c], row.v[c], tolerance) << kColumns[c];
+    per_model.push_back(s);
+  }
+  const PsbScores mean = averagePsbScores(per_model);
+  EXPECT_EQ(mean.count, 38);
+  const double got[8] = {mean.CD, mean.HD, mean.Rm, mean.Rf, mean.RI, mean.GCE, mean.LCE, mean.GCEf};
+  for (int c = 0; c < 8; ++c)
+    EXPECT_NEAR(got[c], kFixtureMean[c], tolerance) << "mean " << kColumns[c];
 }

@@ -352,8 +352,9 @@ PsbEvaluator::compare(const Labeling& s1, const Labeling& s2, PsbScores& scores)
     matched2 += a;
   for (double a : best1)
     matched1 += a;
-  scores.Rm = (total_area_ - matched2) / total_area_;
-  scores.Rf = (total_area_ - matched1) / total_area_;
+  // Mathematically matched <= A; clamp the rounding residue so a perfect match prints 0, not -1e-15.
+  scores.Rm = std::max(0.0, total_area_ - matched2) / total_area_;
+  scores.Rf = std::max(0.0, total_area_ - matched1) / total_area_;
   scores.HD = 0.5 * (scores.Rm + scores.Rf);
 
   // 1 - Rand index over face pairs. Quirk kept from the benchmark: it divides by n·⌊(n−1)/2⌋
