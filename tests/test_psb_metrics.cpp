@@ -262,6 +262,24 @@ TEST(PsbMetrics, GapsFaceRules)
   EXPECT_NEAR(s.RI, 16.0 / 36.0, 1e-12);
 }
 
+TEST(PsbMetrics, FlippedFaceHasNoNeighbours)
+{
+  // Square 0=(0,0) 1=(1,0) 2=(1,1) 3=(0,1) plus 4=(−1,½). Face 0 = (0,1,2) runs 2→0; face 1 =
+  // (0,3,2) is flipped and runs 2→0 too, so GAPS makes it on fresh vertices: no neighbours.
+  // Face 2 = (3,0,4) runs 3→0, which face 1 would have paired with (it runs 0→3).
+  // Labels {0,1,0} differ across both of face 1's edges, yet no edge has a face on each side:
+  // no cut at all, so CD is undefined even for identical segmentations. With face 1 wound
+  // (0,2,3) like its neighbours, both edges are cuts and identical labelings give CD = 0.
+  std::vector<Eigen::Vector3d> v{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 0.5, 0}};
+  const std::vector<int> labels{0, 1, 0};
+  const PsbEvaluator flipped(TriangleMesh(v, {{0, 1, 2}, {0, 3, 2}, {3, 0, 4}}));
+  EXPECT_FALSE(scored(flipped, labels, labels).hasCD());
+  const PsbEvaluator oriented(TriangleMesh(v, {{0, 1, 2}, {0, 2, 3}, {3, 0, 4}}));
+  const PsbScores s = scored(oriented, labels, labels);
+  ASSERT_TRUE(s.hasCD());
+  EXPECT_EQ(s.CD, 0.0);
+}
+
 TEST(PsbMetrics, DisconnectedCutsFollowTheBenchmark)
 {
   // Two separate strips: a cut in one only, the reference's cut in the other only. Every zero
