@@ -42,7 +42,8 @@ public:
     tree_.setInputCloud(cloud);
   }
 
-  /** Spheres whose centre lies strictly closer than \a radius to \a q. */
+  /** Spheres whose centre lies strictly closer than \a radius to \a q, in no particular order
+   * (callers sort or de-duplicate what they keep). */
   void
   within(const Eigen::Vector3d& q, double radius, std::vector<int>& out)
   {
@@ -55,7 +56,6 @@ public:
     for (int s : indices_)
       if ((centers_[s] - q).norm() < radius)
         out.push_back(s);
-    std::sort(out.begin(), out.end()); // FLANN's order is not part of the result
   }
 
 private:
