@@ -478,3 +478,42 @@ TEST(MatRegionGrowing, TeddyWithTheAuthorsMats)
   EXPECT_EQ(segment(t.graph, t.visibility, &t.tags).labels, r.labels);
   EXPECT_EQ(segment(t.graph, t.visibility, &t.tags, 42u).labels, r.labels);
 }
+
+TEST(MatRegionGrowing, ManyPatchesAndNonFiniteInput)
+{
+  // 300 separate two-cone chains with distinct radii: 300 regions, more than the reference's
+  // fixed 200×200 EMD matrix held; nothing is adjacent, so nothing merges.
+  SyntheticMat m;
+  for (int k = 0; k < 300; ++k) {
+    const double r = 0.05 + 0.001 * k;
+    m.addChain(-1, {{10.0 * k, 0, 0}, {10.0 * k + 0.1, 0, 0}, {10.0 * k + 0.2, 0, 0}}, {r, r, r});
+  }
+  const Result many = segment(graphOf(m.build()));
+  ASSERT_TRUE(many.ok);
+  EXPECT_EQ(many.parts.size(), 300u);
+  // Largest radius first: part 0 is the last chain.
+  EXPECT_EQ(many.parts[0].indices, (std::vector<int>{598, 599}));
+
+  // Points with NaN radius, NaN normal or NaN position: no crash, every node gets a part.
+  std::vector<Eigen::Vector3d> c{{0, 0, 0}, {0.1, 0, 0}, {0.2, 0, 0}, {NAN, 0, 0}};
+  std::vector<MatNode> nodes(4);
+  for (int i = 0; i < 4; ++i) {
+    nodes[i].v = Eigen::Vector3i(i, -1, -1);
+    nodes[i].centroid = c[i];
+    nodes[i].normal = Eigen::Vector3d(0, 0, 1);
+    nodes[i].mean_radius = 0.1;
+  }
+  nodes[1].mean_radius = NAN;
+  nodes[2].normal = Eigen::Vector3d(NAN, 0, 0);
+  const auto graph = std::make_shared<MatGraph>(c, std::vector<double>{0.1, NAN, 0.1, 0.1}, nodes,
+                                                std::vector<std::vector<int>>{{1}, {2}, {3}, {}});
+  const Result r = segment(graph);
+  ASSERT_TRUE(r.ok);
+  ASSERT_EQ(r.labels.size(), 4u);
+  for (int l : r.labels) {
+    EXPECT_GE(l, 0);
+    EXPECT_LT(l, static_cast<int>(r.parts.size()));
+  }
+  // A NaN cost never grows: node 0 cannot reach node 1 (NaN radius) by growing.
+  EXPECT_EQ(r.coarse[0], std::vector<int>{0});
+}
