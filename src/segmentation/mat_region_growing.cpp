@@ -312,13 +312,17 @@ MatRegionGrowing::extract(std::vector<pcl::PointIndices>& parts)
   std::vector<int> tag(n, 0);
   if (tags_.node_tag.size() == static_cast<std::size_t>(n)) {
     tag = tags_.node_tag;
+    int unknown = 0;
     for (int& t : tag)
       if (t < 0 || t >= static_cast<int>(tags_.tag_ratio.size()) ||
           !std::isfinite(tags_.tag_ratio[t])) {
-        PCL_WARN("[segmat::MatRegionGrowing::extract] Tag %d has no finite ratio; treated as 0.\n",
-                 t);
         t = 0;
+        ++unknown;
       }
+    if (unknown > 0)
+      PCL_WARN("[segmat::MatRegionGrowing::extract] %d nodes carry a tag without a finite "
+               "ratio; treated as 0.\n",
+               unknown);
   }
   else if (!tags_.node_tag.empty()) {
     PCL_WARN("[segmat::MatRegionGrowing::extract] %zu structure tags for %d nodes; ignored.\n",
