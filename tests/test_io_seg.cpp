@@ -1,5 +1,6 @@
 // SEG reader/writer: strict one-label-per-line files, counts, the bundled teddy segmentations.
 #include <segmat/common/error.h>
+#include <segmat/io/off.h>
 #include <segmat/io/seg.h>
 
 #include <util/temp_files.h>
@@ -86,4 +87,30 @@ TEST(SaveSeg, RoundTripAndExactText)
   io::saveSeg(path, labels);
   EXPECT_EQ(segmat::test::readWholeFile(path), "0\n5\n-1\n2147483647\n3\n");
   EXPECT_EQ(io::loadSeg(path, 5), labels);
+}
+
+TEST(LoadSeg, EveryPsbDevSegmentationMatchesItsMesh)
+{
+  // The 38 development meshes and their human segmentations (../shared/data, present in CI).
+  const std::string root = SEGMAT_SHARED_DATA_DIR "/psb-dev";
+  if (!segmat::test::fileExists(root + "/off"))
+    GTEST_SKIP() << root << " is not present";
+  int meshes = 0, segmentations = 0;
+  for (int id = 1; id <= 400; ++id) {
+    const std::string off = root + "/off/" + std::to_string(id) + ".off";
+    if (!segmat::test::fileExists(off))
+      continue;
+    const long faces = static_cast<long>(io::loadOff(off).numFaces());
+    ++meshes;
+    for (int k = 0;; ++k) {
+      const std::string seg = root + "/seg/Benchmark/" + std::to_string(id) + "/" +
+                              std::to_string(id) + "_" + std::to_string(k) + ".seg";
+      if (!segmat::test::fileExists(seg))
+        break;
+      EXPECT_NO_THROW(io::loadSeg(seg, faces)) << seg;
+      ++segmentations;
+    }
+  }
+  EXPECT_EQ(meshes, 38);
+  EXPECT_EQ(segmentations, 443);
 }

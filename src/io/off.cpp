@@ -2,13 +2,13 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  */
+#include "polygon_fan.h"
 #include "text_file.h"
 
-#include <segmat/io/atomic_file.h>
 #include <segmat/io/off.h>
 
+#include <array>
 #include <cstdint>
-#include <ostream>
 
 namespace segmat {
 namespace io {
@@ -80,6 +80,7 @@ loadOff(const std::string& path)
     mesh.vertices.push_back(p); // further values (colours, normals) are ignored
   }
 
+  std::vector<int> corners;
   for (long f = 0; f < nf; ++f) {
     if (!file.nextLine(line))
       file.fail("file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
@@ -91,20 +92,15 @@ loadOff(const std::string& path)
     if (static_cast<std::size_t>(n) > tokens.remaining())
       file.fail(context + " announces " + std::to_string(n) + " vertices but lists only " +
                 std::to_string(tokens.remaining()) + " values");
-    int first = 0, previous = 0;
+    corners.clear();
     for (long k = 0; k < n; ++k) {
       const int index = file.parseInt(file.require(tokens, context, "index"), "vertex index");
       if (index < 0 || index >= nv)
         file.fail(context + " refers to vertex " + std::to_string(index) + " but there are " +
                   std::to_string(nv) + " vertices");
-      // Fan (v0, v_{k-1}, v_k), as the PSB reader triangulates: a triangle-only file keeps its
-      // face order, so .seg labels line up.
-      if (k == 0)
-        first = index;
-      else if (k >= 2)
-        mesh.faces.emplace_back(first, previous, index);
-      previous = index;
+      corners.push_back(index);
     }
+    detail::appendFan(mesh.faces, corners);
     // Anything after the indices (per-face colours) is ignored.
   }
 
@@ -119,25 +115,14 @@ saveOff(const std::string& path, const TriangleMesh& mesh)
 {
   detail::checkMeshForWriting(path, mesh);
   std::string text = "OFF\n";
-  detail::appendInt(text, static_cast<long>(mesh.vertices.size()));
-  text += ' ';
-  detail::appendInt(text, static_cast<long>(mesh.faces.size()));
-  text += " 0\n";
-  for (const Eigen::Vector3d& p : mesh.vertices) {
-    for (int k = 0; k < 3; ++k) {
-      detail::appendDouble(text, p[k]);
-      text += k < 2 ? ' ' : '\n';
-    }
-  }
-  for (const Eigen::Vector3i& f : mesh.faces) {
-    text += '3';
-    for (int k = 0; k < 3; ++k) {
-      text += ' ';
-      detail::appendInt(text, f[k]);
-    }
-    text += '\n';
-  }
-  writeFileAtomically(path, [&](std::ostream& out) { out.write(text.data(), text.size()); });
+  detail::appendLine(text, "",
+                     std::array<long, 3>{static_cast<long>(mesh.vertices.size()),
+                                         static_cast<long>(mesh.faces.size()), 0L});
+  for (const Eigen::Vector3d& p : mesh.vertices)
+    detail::appendLine(text, "", p);
+  for (const Eigen::Vector3i& f : mesh.faces)
+    detail::appendLine(text, "3", f);
+  detail::writeTextAtomically(path, text);
 }
 
 } // namespace io

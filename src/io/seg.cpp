@@ -4,11 +4,9 @@
  */
 #include "text_file.h"
 
-#include <segmat/io/atomic_file.h>
 #include <segmat/io/seg.h>
 
 #include <algorithm>
-#include <ostream>
 
 namespace segmat {
 namespace io {
@@ -48,7 +46,7 @@ saveSeg(const std::string& path, const std::vector<int>& labels)
     detail::appendInt(text, label);
     text += '\n';
   }
-  writeFileAtomically(path, [&](std::ostream& out) { out.write(text.data(), text.size()); });
+  detail::writeTextAtomically(path, text);
 }
 
 } // namespace io

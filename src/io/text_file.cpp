@@ -5,12 +5,14 @@
 #include "text_file.h"
 
 #include <segmat/common/error.h>
+#include <segmat/io/atomic_file.h>
 
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <ostream>
 
 namespace segmat {
 namespace io {
@@ -204,6 +206,14 @@ appendInt(std::string& out, long value)
   char buffer[24];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
   out.append(buffer, result.ptr);
+}
+
+void
+writeTextAtomically(const std::string& path, const std::string& text)
+{
+  writeFileAtomically(path, [&](std::ostream& out) {
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  });
 }
 
 void

@@ -114,6 +114,42 @@ appendDouble(std::string& out, double value);
 void
 appendInt(std::string& out, long value);
 
+/** \brief Appends a number: shortest round-trip text for doubles, decimal for integers. */
+inline void
+appendNumber(std::string& out, double value)
+{
+  appendDouble(out, value);
+}
+inline void
+appendNumber(std::string& out, long value)
+{
+  appendInt(out, value);
+}
+inline void
+appendNumber(std::string& out, int value)
+{
+  appendInt(out, value);
+}
+
+/** \brief Appends one line: \a first (a tag such as "v", or "" for none), then the values of
+ * \a values (anything with size() and operator[]) separated by single spaces, then '\n'. */
+template <typename Values>
+void
+appendLine(std::string& out, std::string_view first, const Values& values)
+{
+  out += first;
+  for (int k = 0; k < static_cast<int>(values.size()); ++k) {
+    if (k > 0 || !first.empty())
+      out += ' ';
+    appendNumber(out, values[k]);
+  }
+  out += '\n';
+}
+
+/** \brief Writes \a text to \a path whole or not at all (io::writeFileAtomically). */
+void
+writeTextAtomically(const std::string& path, const std::string& text);
+
 /** \brief Refuses (segmat::Error naming \a path) a mesh no reader would take back: a non-finite
  * coordinate or a face index out of range. Writers call it before touching the file. */
 void
