@@ -1,0 +1,280 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <segmat/geometry/face_orientation.h>
+#include <segmat/geometry/sphere_tree.h>
+#include <segmat/segmentation/label_transfer.h>
+
+#include <pcl/console/print.h>
+#include <pcl/common/point_tests.h>
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/pcl_base.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace segmat {
+namespace {
+
+// A part without spheres can never be the closest one.
+constexpr double kNoPartCost = 1e9;
+constexpr double kRadiansToDegrees = 57.295779513082320876798154814105;
+
+} // namespace
+
+Eigen::MatrixXd
+computePartDistanceCosts(const std::vector<Eigen::Vector3d>& positions, const MatGraph& graph,
+                         const std::vector<std::vector<int>>& parts)
+{
+  const long n = static_cast<long>(positions.size());
+  const int num_parts = static_cast<int>(parts.size());
+  Eigen::MatrixXd costs(n, num_parts);
+  double diagonal = graph.centerBoundingBoxDiagonal();
+  if (!(diagonal > 0.0))
+    diagonal = 1.0; // one sphere, or all centres equal: distances are then in model units
+  const double scale = kTransferEnergyScale / diagonal;
+  for (int l = 0; l < num_parts; ++l) {
+    std::vector<int> spheres;
+    for (int node : parts[l]) {
+      const MatNode& m = graph.node(node);
+      for (int k = 0; k < m.size(); ++k)
+        spheres.push_back(m.v[k]);
+    }
+    const SphereTree tree(graph.centers(), graph.radii(), spheres);
+    if (tree.empty()) {
+      costs.col(l).setConstant(kNoPartCost);
+      continue;
+    }
+    // Consecutive elements are usually close, so the previous answer is a good first bound.
+    // The result does not depend on the hint (the minimum is exact), hence on the threads.
+    int hint = -1;
+#pragma omp parallel for schedule(static) firstprivate(hint)
+    for (long i = 0; i < n; ++i) {
+      const double d = tree.signedDistance(positions[i], 0.0, &hint);
+      costs(i, l) = d > 0.0 ? std::floor(d * scale) : 0.0;
+    }
+  }
+  return costs;
+}
+
+double
+computeCreaseCost(const Eigen::Vector3d& centre_a, const Eigen::Vector3d& normal_a,
+                  const Eigen::Vector3d& centre_b, const Eigen::Vector3d& normal_b, double omega)
+{
+  double cosine = normal_a.dot(normal_b);
+  if (!std::isfinite(cosine))
+    cosine = 0.0;
+  const double theta = std::acos(std::clamp(cosine, -1.0, 1.0)) * kRadiansToDegrees;
+  const Eigen::Vector3d step = centre_b - centre_a;
+  const bool concave = step.dot(normal_a - normal_b) > 1e-6 * step.norm(); // NaN → convex
+  const double per_registration = omega * ((concave ? 180.0 : 360.0) - theta) / 180.0;
+  // Truncated like the reference's int(), with a little slack so that exact angles (flat, 90°)
+  // are not pushed one unit down by round-off in acos. The reference registered every adjacency
+  // twice, (i, j) and (j, i): the cost counts double.
+  return 2.0 * std::floor(std::max(0.0, per_registration * kTransferEnergyScale) + 1e-6);
+}
+
+std::vector<PottsEdge>
+computeMeshSmoothnessEdges(const TriangleMesh& mesh, double omega)
+{
+  const std::vector<FaceAdjacency> adjacency = mesh.faceAdjacency();
+  const std::vector<int> signs = computeOutwardFaceSigns(mesh, adjacency);
+  const int num_faces = static_cast<int>(mesh.numFaces());
+  std::vector<Eigen::Vector3d> normals(num_faces), centroids(num_faces);
+  for (int f = 0; f < num_faces; ++f) {
+    normals[f] = signs[f] * mesh.faceNormal(f);
+    centroids[f] = mesh.faceCentroid(f);
+  }
+  std::vector<PottsEdge> edges(adjacency.size());
+  for (std::size_t k = 0; k < adjacency.size(); ++k) {
+    const int a = adjacency[k].face_a, b = adjacency[k].face_b;
+    edges[k] = {a, b, computeCreaseCost(centroids[a], normals[a], centroids[b], normals[b], omega)};
+  }
+  return edges;
+}
+
+int
+compactLabels(std::vector<int>& labels)
+{
+  int max_label = -1;
+  for (int l : labels)
+    max_label = std::max(max_label, l);
+  std::vector<int> rank(max_label + 1, -1);
+  for (int l : labels)
+    if (l >= 0)
+      rank[l] = 0;
+  int count = 0;
+  for (int& r : rank)
+    if (r == 0)
+      r = count++;
+  for (int& l : labels)
+    if (l >= 0)
+      l = rank[l];
+  return count;
+}
+
+void
+LabelTransferBase::setSmoothnessWeight(double omega)
+{
+  if (!std::isfinite(omega) || omega < 0.0) {
+    PCL_WARN("[segmat::LabelTransfer::setSmoothnessWeight] %g ignored (must be finite and >= 0), "
+             "keeping %g.\n",
+             omega, omega_);
+    return;
+  }
+  omega_ = omega;
+}
+
+bool
+LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>& positions,
+                         std::vector<int>& labels)
+{
+  if (!graph_ || graph_->empty()) {
+    PCL_ERROR("[segmat::%s::transfer] no MAT graph, or an empty one.\n", caller);
+    return false;
+  }
+  if (parts_.empty()) {
+    PCL_ERROR("[segmat::%s::transfer] no parts.\n", caller);
+    return false;
+  }
+  const int num_nodes = static_cast<int>(graph_->numNodes());
+  for (std::size_t l = 0; l < parts_.size(); ++l)
+    for (int node : parts_[l])
+      if (node < 0 || node >= num_nodes) {
+        PCL_ERROR("[segmat::%s::transfer] part %zu names node %d; the graph has %d nodes.\n",
+                  caller, l, node, num_nodes);
+        return false;
+      }
+  if (parts_.size() == 1) {
+    labels.assign(positions.size(), 0);
+    return true;
+  }
+  solver_.setUnaryCosts(computePartDistanceCosts(positions, *graph_, parts_));
+  if (!solver_.compute(labels)) {
+    labels.clear();
+    return false;
+  }
+  compactLabels(labels);
+  return true;
+}
+
+bool
+MeshLabelTransfer::transfer(std::vector<int>& face_labels)
+{
+  face_labels.clear();
+  if (!mesh_ || mesh_->empty()) {
+    PCL_ERROR("[segmat::MeshLabelTransfer::transfer] no mesh, or a mesh without faces.\n");
+    return false;
+  }
+  if (!edges_valid_ || edges_omega_ != omega_) {
+    solver_.setEdges(computeMeshSmoothnessEdges(*mesh_, omega_));
+    edges_valid_ = true;
+    edges_omega_ = omega_;
+  }
+  std::vector<Eigen::Vector3d> centroids(mesh_->numFaces());
+  for (std::size_t f = 0; f < centroids.size(); ++f)
+    centroids[f] = mesh_->faceCentroid(static_cast<int>(f));
+  return solve("MeshLabelTransfer", centroids, face_labels);
+}
+
+void
+CloudLabelTransfer::setNeighbourCount(int k)
+{
+  if (k < 1) {
+    PCL_WARN("[segmat::CloudLabelTransfer::setNeighbourCount] %d < 1 ignored, keeping %d.\n", k,
+             k_);
+    return;
+  }
+  k_ = k;
+  edges_valid_ = false;
+}
+
+bool
+CloudLabelTransfer::transfer(std::vector<int>& point_labels)
+{
+  point_labels.clear();
+  if (!cloud_ || cloud_->empty()) {
+    PCL_ERROR("[segmat::CloudLabelTransfer::transfer] no cloud, or an empty one.\n");
+    return false;
+  }
+  if (normals_ && normals_->size() != cloud_->size()) {
+    PCL_ERROR("[segmat::CloudLabelTransfer::transfer] %zu normals for %zu points.\n",
+              static_cast<std::size_t>(normals_->size()),
+              static_cast<std::size_t>(cloud_->size()));
+    return false;
+  }
+  const pcl::PointCloud<pcl::PointXYZ>& cloud = *cloud_;
+  if (!edges_valid_ || edges_omega_ != omega_) {
+    finite_.clear();
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      if (pcl::isFinite(cloud[i]))
+        finite_.push_back(static_cast<int>(i));
+    std::vector<PottsEdge> edges;
+    if (finite_.size() > 1) {
+      // Graph nodes are positions in finite_; the tree answers with cloud indices.
+      std::vector<int> node_of(cloud.size(), -1);
+      for (std::size_t k = 0; k < finite_.size(); ++k)
+        node_of[finite_[k]] = static_cast<int>(k);
+      pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+      tree.setInputCloud(cloud_, pcl::IndicesConstPtr(new pcl::Indices(finite_.begin(),
+                                                                        finite_.end())));
+      const int k = std::min<int>(k_ + 1, static_cast<int>(finite_.size()));
+      std::vector<std::vector<int>> neighbours(finite_.size());
+#pragma omp parallel for schedule(static)
+      for (long a = 0; a < static_cast<long>(finite_.size()); ++a) {
+        pcl::Indices found;
+        std::vector<float> sq;
+        tree.nearestKSearch(cloud[finite_[a]], k, found, sq);
+        for (pcl::index_t j : found)
+          neighbours[a].push_back(node_of[j]);
+      }
+      // Symmetric k-NN graph: an edge when either point lists the other.
+      std::vector<std::pair<int, int>> pairs;
+      for (std::size_t a = 0; a < neighbours.size(); ++a)
+        for (int b : neighbours[a])
+          if (b != static_cast<int>(a) && b >= 0)
+            pairs.emplace_back(std::min<int>(a, b), std::max<int>(a, b));
+      std::sort(pairs.begin(), pairs.end());
+      pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+      const double degree_scale = 3.0 / k_;
+      // Without normals every edge costs what a flat convex edge costs on a mesh.
+      const double flat_cost = computeCreaseCost(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(),
+                                                 Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(),
+                                                 omega_) *
+                               degree_scale;
+      edges.reserve(pairs.size());
+      for (const auto& p : pairs) {
+        const int ia = finite_[p.first], ib = finite_[p.second];
+        double w = flat_cost;
+        if (normals_) {
+          const Eigen::Vector3d ca = cloud[ia].getVector3fMap().cast<double>(),
+                                cb = cloud[ib].getVector3fMap().cast<double>(),
+                                na = (*normals_)[ia].getNormalVector3fMap().cast<double>(),
+                                nb = (*normals_)[ib].getNormalVector3fMap().cast<double>();
+          w = std::floor(computeCreaseCost(ca, na, cb, nb, omega_) * degree_scale);
+        }
+        edges.push_back({p.first, p.second, std::floor(w)});
+      }
+    }
+    solver_.setEdges(std::move(edges));
+    edges_valid_ = true;
+    edges_omega_ = omega_;
+  }
+  if (finite_.empty()) {
+    PCL_ERROR("[segmat::CloudLabelTransfer::transfer] no point has finite coordinates.\n");
+    return false;
+  }
+  std::vector<Eigen::Vector3d> positions(finite_.size());
+  for (std::size_t k = 0; k < finite_.size(); ++k)
+    positions[k] = cloud[finite_[k]].getVector3fMap().cast<double>();
+  std::vector<int> labels;
+  if (!solve("CloudLabelTransfer", positions, labels))
+    return false;
+  point_labels.assign(cloud.size(), -1);
+  for (std::size_t k = 0; k < finite_.size(); ++k)
+    point_labels[finite_[k]] = labels[k];
+  return true;
+}
+
+} // namespace segmat
