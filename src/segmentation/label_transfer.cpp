@@ -130,6 +130,7 @@ bool
 LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>& positions,
                          std::vector<int>& labels)
 {
+  label_parts_.clear();
   if (!graph_ || graph_->empty()) {
     PCL_ERROR("[segmat::%s::transfer] no MAT graph, or an empty one.\n", caller);
     return false;
@@ -148,6 +149,7 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
       }
   if (parts_.size() == 1) {
     labels.assign(positions.size(), 0);
+    label_parts_.assign(positions.empty() ? 0 : 1, 0);
     return true;
   }
   solver_.setUnaryCosts(computePartDistanceCosts(positions, *graph_, parts_));
@@ -155,6 +157,12 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
     labels.clear();
     return false;
   }
+  std::vector<char> present(parts_.size(), 0);
+  for (int l : labels)
+    present[l] = 1;
+  for (std::size_t l = 0; l < parts_.size(); ++l)
+    if (present[l])
+      label_parts_.push_back(static_cast<int>(l));
   compactLabels(labels);
   return true;
 }
@@ -163,11 +171,13 @@ bool
 MeshLabelTransfer::transfer(std::vector<int>& face_labels)
 {
   face_labels.clear();
+  label_parts_.clear();
   if (!mesh_ || mesh_->empty()) {
     PCL_ERROR("[segmat::MeshLabelTransfer::transfer] no mesh, or a mesh without faces.\n");
     return false;
   }
-  if (!edges_valid_ || edges_omega_ != omega_) {
+  // The face graph is only needed when there is something to cut (and then kept for reuse).
+  if (parts_.size() > 1 && (!edges_valid_ || edges_omega_ != omega_)) {
     solver_.setEdges(computeMeshSmoothnessEdges(*mesh_, omega_));
     edges_valid_ = true;
     edges_omega_ = omega_;
@@ -194,6 +204,7 @@ bool
 CloudLabelTransfer::transfer(std::vector<int>& point_labels)
 {
   point_labels.clear();
+  label_parts_.clear();
   if (!cloud_ || cloud_->empty()) {
     PCL_ERROR("[segmat::CloudLabelTransfer::transfer] no cloud, or an empty one.\n");
     return false;

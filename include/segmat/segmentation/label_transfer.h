@@ -149,6 +149,15 @@ public:
     return solver_.getEnergy();
   }
 
+  /** \brief For each output label of the last transfer, the index of its part in getParts()
+   * (labels are compacted: parts that won no element get no label).
+   */
+  const std::vector<int>&
+  getLabelParts() const
+  {
+    return label_parts_;
+  }
+
   /** \brief α-expansion cycles run by the last transfer. */
   int
   getCycles() const
@@ -170,6 +179,7 @@ protected:
   std::vector<std::vector<int>> parts_;
   double omega_ = 0.3;
   AlphaExpansion solver_;
+  std::vector<int> label_parts_;
 };
 
 /** \brief Carries parts of the MAT graph to the faces of a triangle mesh by α-expansion
