@@ -177,3 +177,9 @@ TEST(LoadMaErrors, BinaryJunk)
   EXPECT_TRUE(maFails("junk.ma", std::string("1 0 0\nv 0 0 0 1\n\x7f\x45\x4c\x46\x02", 17), 3,
                       "binary data"));
 }
+
+TEST(LoadMaErrors, DamagedCopiesFailCleanly)
+{
+  EXPECT_TRUE(segmat::test::damagedCopiesFailCleanly(
+      "damaged.ma", kSmall, [](const std::string& path) { io::loadMa(path); }));
+}

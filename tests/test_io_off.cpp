@@ -257,3 +257,9 @@ TEST(SaveOff, RefusesUnreadableMeshAndLeavesOldFile)
   EXPECT_TRUE(throwsFileError([&] { io::saveOff(path, bad); }, path, 0, "not finite"));
   EXPECT_EQ(segmat::test::readWholeFile(path), kSquare);
 }
+
+TEST(LoadOffErrors, DamagedCopiesFailCleanly)
+{
+  EXPECT_TRUE(segmat::test::damagedCopiesFailCleanly(
+      "damaged.off", kSquare, [](const std::string& path) { io::loadOff(path); }));
+}

@@ -6,8 +6,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <random>
+#include <vector>
 
 namespace segmat {
 namespace test {
@@ -74,6 +77,35 @@ throwsFileError(const std::function<void()>& action, const std::string& path, lo
     return ::testing::AssertionFailure() << "threw another exception: " << e.what();
   }
   return ::testing::AssertionFailure() << "did not throw";
+}
+
+::testing::AssertionResult
+damagedCopiesFailCleanly(const std::string& name, const std::string& bytes,
+                         const std::function<void(const std::string& path)>& load)
+{
+  std::vector<std::string> copies;
+  const std::size_t step = std::max<std::size_t>(1, bytes.size() / 200);
+  for (std::size_t n = 0; n < bytes.size(); n += step)
+    copies.push_back(bytes.substr(0, n));
+  std::mt19937 rng(12345);
+  const char replacements[] = {'\0', '\n', ' ', '-', '9', 'x', '#', '\xff'};
+  for (int i = 0; i < 200 && !bytes.empty(); ++i) {
+    std::string copy = bytes;
+    copy[rng() % copy.size()] = replacements[rng() % sizeof replacements];
+    copies.push_back(copy);
+  }
+  int errors = 0;
+  for (std::size_t i = 0; i < copies.size(); ++i) {
+    const std::string path = writeScratchFile(name, copies[i]);
+    try {
+      load(path);
+    } catch (const segmat::Error&) {
+      ++errors;
+    } catch (const std::exception& e) {
+      return ::testing::AssertionFailure() << "copy " << i << " threw " << e.what();
+    }
+  }
+  return ::testing::AssertionSuccess() << errors << " of " << copies.size() << " copies rejected";
 }
 
 } // namespace test

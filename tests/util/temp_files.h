@@ -32,5 +32,14 @@ fileExists(const std::string& path);
 throwsFileError(const std::function<void()>& action, const std::string& path, long line,
                 const std::string& needle = "");
 
+/** \brief Loads damaged copies of \a bytes with \a load: every truncation (at most ~200, evenly
+ * spaced) and 200 copies with one byte replaced (seeded, so the same every run). Each load must
+ * either succeed or throw segmat::Error; returns a failure naming the first copy that threw
+ * something else. (A crash or hang fails the test by itself.)
+ */
+::testing::AssertionResult
+damagedCopiesFailCleanly(const std::string& name, const std::string& bytes,
+                         const std::function<void(const std::string& path)>& load);
+
 } // namespace test
 } // namespace segmat
