@@ -5,6 +5,7 @@
 #pragma once
 
 #include <segmat/segmentation/mat_graph.h>
+#include <segmat/segmentation/patch_merging.h>
 #include <segmat/segmentation/structure_tags.h>
 
 #include <Eigen/Core>
@@ -54,9 +55,9 @@ public:
   using Ptr = std::shared_ptr<MatRegionGrowing>;
   using ConstPtr = std::shared_ptr<const MatRegionGrowing>;
   /** \brief Returns true when the straight segment between two points does not cross the shape's
-   * surface (the two points "see" each other).
+   * surface (the two points "see" each other); see patch_merging.h.
    */
-  using SegmentVisibility = std::function<bool(const Eigen::Vector3d&, const Eigen::Vector3d&)>;
+  using SegmentVisibility = segmat::SegmentVisibility;
 
   /** \brief Defaults of the paper: δ0 = 0.015, η = 0.002, α = 0.05, λ = 1.5, 3 merge rounds. */
   MatRegionGrowing();
