@@ -37,6 +37,7 @@ void
 MeshSegmentation::setInputMesh(const TriangleMesh::ConstPtr& mesh)
 {
   mesh_ = mesh;
+  surface_tree_.reset();
   transfer_.setInputMesh(mesh); // drops the transfer's face-graph weights
 }
 
@@ -109,6 +110,19 @@ MeshSegmentation::segment(std::vector<int>& face_labels)
     seconds = clock.lap();
   }
   stage_seconds_.emplace_back("tags", seconds);
+
+  seconds = 0.0;
+  clock.lap();
+  if (!surface_tree_) {
+    surface_tree_ = std::make_shared<AabbTree>(*mesh_);
+    // Two points see each other when the segment between them crosses no face (§4.4).
+    const std::shared_ptr<const AabbTree> tree = surface_tree_;
+    grower_.setSegmentVisibility([tree](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+      return !tree->segmentIntersects(a, b);
+    });
+    seconds = clock.lap();
+  }
+  stage_seconds_.emplace_back("surface_tree", seconds);
 
   clock.lap();
   std::vector<pcl::PointIndices> grown;

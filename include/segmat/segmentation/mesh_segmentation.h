@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <segmat/geometry/aabb_tree.h>
 #include <segmat/geometry/medial_mesh.h>
 #include <segmat/geometry/triangle_mesh.h>
 #include <segmat/segmentation/label_transfer.h>
@@ -26,10 +27,11 @@ namespace segmat {
  * Stages, each timed (getStageSeconds()):
  *  1. "graph": the base-MAT graph (MatGraph::fromMedialMesh, §4.1);
  *  2. "tags": structural tags from the structured MAT (computeStructureTags, §4.2);
- *  3. "grow_merge": region growing, swallowing, tiny-patch absorption and merging
+ *  3. "surface_tree": an AabbTree over the mesh, for the merging's visibility test;
+ *  4. "grow_merge": region growing, swallowing, tiny-patch absorption and merging
  *     (MatRegionGrowing, §4.3–4.4);
- *  4. "transfer": the parts carried to the faces by α-expansion (MeshLabelTransfer, §5).
- * Stages 1–2 (and the transfer's face-graph weights) depend only on the inputs: they are computed
+ *  5. "transfer": the parts carried to the faces by α-expansion (MeshLabelTransfer, §5).
+ * Stages 1–3 (and the transfer's face-graph weights) depend only on the inputs: they are computed
  * once and reused when only δ0, η, α, λ or ω change and segment() runs again (CGAL's split of
  * sdf_values / segmentation_from_sdf_values). A reused stage reports 0 seconds.
  *
@@ -177,7 +179,7 @@ public:
   getParts(std::vector<pcl::PointIndices>& parts) const;
 
   /** \brief Seconds spent in each stage by the last segment(), in pipeline order ("graph",
-   * "tags", "grow_merge", "transfer"); a stage whose result was reused reports 0.
+   * "tags", "surface_tree", "grow_merge", "transfer"); a stage whose result was reused reports 0.
    */
   const std::vector<std::pair<std::string, double>>&
   getStageSeconds() const
@@ -210,6 +212,7 @@ private:
   MatGraph::Ptr graph_;
   bool tags_valid_ = false;
   StructureTags tags_;
+  std::shared_ptr<AabbTree> surface_tree_;
 
   MatRegionGrowing grower_;
   MeshLabelTransfer transfer_;
