@@ -12,19 +12,6 @@ using namespace segmat;
 
 namespace {
 
-double
-energyOf(const Eigen::MatrixXd& unary, const std::vector<PottsEdge>& edges,
-         const std::vector<int>& labels)
-{
-  double e = 0.0;
-  for (int i = 0; i < unary.rows(); ++i)
-    e += unary(i, labels[i]);
-  for (const PottsEdge& edge : edges)
-    if (labels[edge.a] != labels[edge.b])
-      e += edge.weight;
-  return e;
-}
-
 // Global minimum over all L^n labellings.
 double
 bruteForceMinimum(const Eigen::MatrixXd& unary, const std::vector<PottsEdge>& edges,
@@ -34,7 +21,7 @@ bruteForceMinimum(const Eigen::MatrixXd& unary, const std::vector<PottsEdge>& ed
   std::vector<int> labels(n, 0);
   double best = std::numeric_limits<double>::infinity();
   while (true) {
-    const double e = energyOf(unary, edges, labels);
+    const double e = computePottsEnergy(unary, edges, labels);
     if (e < best) {
       best = e;
       if (best_labels)
@@ -62,7 +49,7 @@ bestExpansionMove(const Eigen::MatrixXd& unary, const std::vector<PottsEdge>& ed
       for (int i = 0; i < n; ++i)
         if (mask & (1 << i))
           moved[i] = alpha;
-      best = std::min(best, energyOf(unary, edges, moved));
+      best = std::min(best, computePottsEnergy(unary, edges, moved));
     }
   return best;
 }
@@ -97,7 +84,7 @@ TEST(AlphaExpansion, RandomSmallProblemsAreExpansionOptimalAndWithinFactorTwo)
     std::vector<int> labels;
     ASSERT_TRUE(solver.compute(labels));
     ASSERT_EQ(labels.size(), static_cast<std::size_t>(n));
-    const double e = energyOf(unary, edges, labels);
+    const double e = computePottsEnergy(unary, edges, labels);
     EXPECT_DOUBLE_EQ(solver.getEnergy(), e);
     const double optimum = bruteForceMinimum(unary, edges);
     // A local minimum for every expansion move, and the Potts factor-2 guarantee.

@@ -201,12 +201,13 @@ AlphaExpansion::validate() const
 }
 
 double
-AlphaExpansion::energy(const std::vector<int>& labels) const
+computePottsEnergy(const Eigen::MatrixXd& unary, const std::vector<PottsEdge>& edges,
+                   const std::vector<int>& labels)
 {
   double sum = 0.0;
-  for (long i = 0; i < unary_.rows(); ++i)
-    sum += unary_(i, labels[i]);
-  for (const PottsEdge& e : edges_)
+  for (long i = 0; i < unary.rows(); ++i)
+    sum += unary(i, labels[i]);
+  for (const PottsEdge& e : edges)
     if (labels[e.a] != labels[e.b])
       sum += e.weight;
   return sum;

@@ -94,6 +94,62 @@ computeMeshSmoothnessEdges(const TriangleMesh& mesh, double omega)
   return edges;
 }
 
+std::vector<PottsEdge>
+computeCloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+                            const pcl::PointCloud<pcl::Normal>::ConstPtr& normals,
+                            const std::vector<int>& nodes, int k, double omega)
+{
+  std::vector<PottsEdge> edges;
+  if (!cloud || nodes.size() < 2 || k < 1)
+    return edges;
+  const int num_nodes = static_cast<int>(nodes.size());
+  std::vector<int> node_of(cloud->size(), -1);
+  for (int a = 0; a < num_nodes; ++a)
+    node_of[nodes[a]] = a;
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud(cloud, pcl::IndicesConstPtr(new pcl::Indices(nodes.begin(), nodes.end())));
+  const int num_found = std::min(k + 1, num_nodes); // the point itself comes back too
+  std::vector<int> found_nodes(static_cast<std::size_t>(num_nodes) * num_found, -1);
+#pragma omp parallel for schedule(static)
+  for (int a = 0; a < num_nodes; ++a) {
+    pcl::Indices found;
+    std::vector<float> sq;
+    tree.nearestKSearch((*cloud)[nodes[a]], num_found, found, sq);
+    for (std::size_t j = 0; j < found.size() && j < static_cast<std::size_t>(num_found); ++j)
+      found_nodes[static_cast<std::size_t>(a) * num_found + j] = node_of[found[j]];
+  }
+  // Symmetric graph: an edge when either point lists the other.
+  std::vector<std::pair<int, int>> pairs;
+  pairs.reserve(found_nodes.size());
+  for (int a = 0; a < num_nodes; ++a)
+    for (int j = 0; j < num_found; ++j) {
+      const int b = found_nodes[static_cast<std::size_t>(a) * num_found + j];
+      if (b >= 0 && b != a)
+        pairs.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+
+  // A point has about k neighbours where a face has 3: scale so the boundary costs compare.
+  const double degree_scale = 3.0 / k;
+  // Without normals every edge costs what a flat edge costs on a mesh.
+  const double flat = computeCreaseCost(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(),
+                                        Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), omega);
+  edges.reserve(pairs.size());
+  for (const auto& p : pairs) {
+    double w = flat;
+    if (normals) {
+      const int ia = nodes[p.first], ib = nodes[p.second];
+      w = computeCreaseCost((*cloud)[ia].getVector3fMap().cast<double>(),
+                            (*normals)[ia].getNormalVector3fMap().cast<double>(),
+                            (*cloud)[ib].getVector3fMap().cast<double>(),
+                            (*normals)[ib].getNormalVector3fMap().cast<double>(), omega);
+    }
+    edges.push_back({p.first, p.second, std::floor(w * degree_scale)});
+  }
+  return edges;
+}
+
 int
 compactLabels(std::vector<int>& labels)
 {
@@ -216,65 +272,22 @@ CloudLabelTransfer::transfer(std::vector<int>& point_labels)
     return false;
   }
   const pcl::PointCloud<pcl::PointXYZ>& cloud = *cloud_;
-  if (!edges_valid_ || edges_omega_ != omega_) {
+  if (!nodes_valid_) {
     finite_.clear();
     for (std::size_t i = 0; i < cloud.size(); ++i)
       if (pcl::isFinite(cloud[i]))
         finite_.push_back(static_cast<int>(i));
-    std::vector<PottsEdge> edges;
-    if (finite_.size() > 1) {
-      // Graph nodes are positions in finite_; the tree answers with cloud indices.
-      std::vector<int> node_of(cloud.size(), -1);
-      for (std::size_t k = 0; k < finite_.size(); ++k)
-        node_of[finite_[k]] = static_cast<int>(k);
-      pcl::KdTreeFLANN<pcl::PointXYZ> tree;
-      tree.setInputCloud(cloud_, pcl::IndicesConstPtr(new pcl::Indices(finite_.begin(),
-                                                                        finite_.end())));
-      const int k = std::min<int>(k_ + 1, static_cast<int>(finite_.size()));
-      std::vector<std::vector<int>> neighbours(finite_.size());
-#pragma omp parallel for schedule(static)
-      for (long a = 0; a < static_cast<long>(finite_.size()); ++a) {
-        pcl::Indices found;
-        std::vector<float> sq;
-        tree.nearestKSearch(cloud[finite_[a]], k, found, sq);
-        for (pcl::index_t j : found)
-          neighbours[a].push_back(node_of[j]);
-      }
-      // Symmetric k-NN graph: an edge when either point lists the other.
-      std::vector<std::pair<int, int>> pairs;
-      for (std::size_t a = 0; a < neighbours.size(); ++a)
-        for (int b : neighbours[a])
-          if (b != static_cast<int>(a) && b >= 0)
-            pairs.emplace_back(std::min<int>(a, b), std::max<int>(a, b));
-      std::sort(pairs.begin(), pairs.end());
-      pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-      const double degree_scale = 3.0 / k_;
-      // Without normals every edge costs what a flat convex edge costs on a mesh.
-      const double flat_cost = computeCreaseCost(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(),
-                                                 Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(),
-                                                 omega_) *
-                               degree_scale;
-      edges.reserve(pairs.size());
-      for (const auto& p : pairs) {
-        const int ia = finite_[p.first], ib = finite_[p.second];
-        double w = flat_cost;
-        if (normals_) {
-          const Eigen::Vector3d ca = cloud[ia].getVector3fMap().cast<double>(),
-                                cb = cloud[ib].getVector3fMap().cast<double>(),
-                                na = (*normals_)[ia].getNormalVector3fMap().cast<double>(),
-                                nb = (*normals_)[ib].getNormalVector3fMap().cast<double>();
-          w = std::floor(computeCreaseCost(ca, na, cb, nb, omega_) * degree_scale);
-        }
-        edges.push_back({p.first, p.second, std::floor(w)});
-      }
-    }
-    solver_.setEdges(std::move(edges));
-    edges_valid_ = true;
-    edges_omega_ = omega_;
+    nodes_valid_ = true;
   }
   if (finite_.empty()) {
     PCL_ERROR("[segmat::CloudLabelTransfer::transfer] no point has finite coordinates.\n");
     return false;
+  }
+  // The neighbour graph is only needed when there is something to cut (and then kept).
+  if (parts_.size() > 1 && (!edges_valid_ || edges_omega_ != omega_)) {
+    solver_.setEdges(computeCloudSmoothnessEdges(cloud_, normals_, finite_, k_, omega_));
+    edges_valid_ = true;
+    edges_omega_ = omega_;
   }
   std::vector<Eigen::Vector3d> positions(finite_.size());
   for (std::size_t k = 0; k < finite_.size(); ++k)

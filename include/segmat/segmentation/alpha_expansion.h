@@ -21,6 +21,13 @@ struct PottsEdge
   double weight = 0.0; ///< cost paid when label(a) != label(b); finite and >= 0
 };
 
+/** \brief The Potts energy Σ_i unary(i, l_i) + Σ_{(a,b,w)} w·[l_a ≠ l_b] of \a labels (one label
+ * per row of \a unary; not validated).
+ */
+double
+computePottsEnergy(const Eigen::MatrixXd& unary, const std::vector<PottsEdge>& edges,
+                   const std::vector<int>& labels);
+
 /** \brief Multi-label energy minimisation by α-expansion (Boykov, Veksler, Zabih, "Fast
  * approximate energy minimization via graph cuts", IEEE TPAMI 23(11), 2001).
  *
@@ -92,9 +99,12 @@ public:
   bool
   compute(std::vector<int>& labels);
 
-  /** \brief Energy of \a labels under the current costs (no validation of \a labels). */
+  /** \brief Energy of \a labels under the current costs (computePottsEnergy). */
   double
-  energy(const std::vector<int>& labels) const;
+  energy(const std::vector<int>& labels) const
+  {
+    return computePottsEnergy(unary_, edges_, labels);
+  }
 
   /** \brief Energy reached by the last compute(). */
   double

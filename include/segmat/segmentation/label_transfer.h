@@ -69,6 +69,22 @@ computeCreaseCost(const Eigen::Vector3d& centre_a, const Eigen::Vector3d& normal
 std::vector<PottsEdge>
 computeMeshSmoothnessEdges(const TriangleMesh& mesh, double omega);
 
+/** \brief The Potts edges of a cloud's symmetric k-nearest-neighbour graph (an edge when either
+ * point is among the other's k nearest), weighted by computeCreaseCost() between the points'
+ * outward normals — or the flat-edge cost when \a normals is null — times 3/k, so that a point
+ * with about k neighbours weighs its neighbourhood like a mesh face with 3.
+ * \param[in] cloud the points (PCL's KdTreeFLANN searches them)
+ * \param[in] normals outward unit normals, one per cloud point, or null
+ * \param[in] nodes the cloud indices that are graph nodes (finite points); node a is nodes[a]
+ * \param[in] k neighbours per point
+ * \param[in] omega ω
+ * \return edges between node numbers (positions in \a nodes), each pair once, sorted
+ */
+std::vector<PottsEdge>
+computeCloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+                            const pcl::PointCloud<pcl::Normal>::ConstPtr& normals,
+                            const std::vector<int>& nodes, int k, double omega);
+
 /** \brief Renumber labels densely (0..k−1) keeping their order; negative labels stay as they
  * are (unassigned). Absent labels disappear (reference post-processing, §3.10).
  * \return k, the number of distinct non-negative labels
@@ -241,11 +257,10 @@ private:
 /** \brief Carries parts of the MAT graph to the points of a cloud by α-expansion: the mesh
  * transfer's energy on the symmetric k-nearest-neighbour graph of the points.
  *
- * Data term: computePartDistanceCosts() at the points. Smoothness: computeCreaseCost() between
- * the points' normals when normals are given (they must be oriented outward, as the medial
- * estimation needs anyway), the flat-edge cost otherwise; each scaled by 3/k so that a point
- * with k neighbours weighs its neighbourhood like a mesh face with 3. Points with a non-finite
- * coordinate get label -1 and take no part.
+ * Data term: computePartDistanceCosts() at the points. Smoothness: computeCloudSmoothnessEdges()
+ * (normals, when given, must be oriented outward, as the medial estimation needs anyway). The
+ * neighbour graph is built once per cloud, normals, k and ω. Points with a non-finite coordinate
+ * get label -1 and take no part.
  */
 class CloudLabelTransfer : public LabelTransferBase
 {
@@ -261,6 +276,7 @@ public:
   setInputCloud(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud)
   {
     cloud_ = cloud;
+    nodes_valid_ = false;
     edges_valid_ = false;
   }
 
@@ -312,6 +328,7 @@ private:
   pcl::PointCloud<pcl::PointXYZ>::ConstPtr cloud_;
   pcl::PointCloud<pcl::Normal>::ConstPtr normals_;
   int k_ = 10;
+  bool nodes_valid_ = false;
   bool edges_valid_ = false;
   double edges_omega_ = 0.0;
   std::vector<int> finite_; ///< indices of finite points (graph nodes)
