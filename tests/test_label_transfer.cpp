@@ -407,6 +407,20 @@ TEST(CloudLabelTransfer, BarSamplesSplitAtTheMiddle)
   ASSERT_TRUE(transfer.transfer(labels));
   EXPECT_EQ(labels, expected);
 
+  // Cut on ~300 voxel representatives instead of all 2078 points: away from the middle (more
+  // than a voxel or two) every point keeps its side; each point takes its voxel's label.
+  transfer.setMaxGraphPoints(300);
+  std::vector<int> coarse;
+  ASSERT_TRUE(transfer.transfer(coarse));
+  ASSERT_EQ(coarse.size(), expected.size());
+  for (std::size_t i = 0; i < coarse.size(); ++i)
+    if (expected[i] < 0 || std::abs((*cloud)[i].x) > 0.6)
+      EXPECT_EQ(coarse[i], expected[i]) << i;
+  std::vector<int> again;
+  ASSERT_TRUE(transfer.transfer(again));
+  EXPECT_EQ(again, coarse);
+  transfer.setMaxGraphPoints(0); // no limit
+
   pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
   normals->resize(3);
   transfer.setInputNormals(normals);

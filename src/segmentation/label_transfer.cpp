@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 
 namespace segmat {
 namespace {
@@ -130,8 +132,8 @@ computeCloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& clou
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 
-  // A point has about k neighbours where a face has 3: scale so the boundary costs compare.
-  const double degree_scale = 3.0 / k;
+  // Per-edge scale so that cutting a cloud costs about what cutting the mesh does (see header).
+  const double degree_scale = 2.0 / k;
   // Without normals every edge costs what a flat edge costs on a mesh.
   const double flat = computeCreaseCost(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(),
                                         Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), omega);
@@ -244,6 +246,87 @@ MeshLabelTransfer::transfer(std::vector<int>& face_labels)
   return solve("MeshLabelTransfer", centroids, face_labels);
 }
 
+namespace {
+
+/** Voxel key of p: 21 bits per axis of floor((p − lo) / h). */
+std::uint64_t
+voxelKey(const pcl::PointXYZ& p, const Eigen::Vector3d& lo, double h)
+{
+  const Eigen::Vector3d g = (p.getVector3fMap().cast<double>() - lo) / h;
+  std::uint64_t key = 0;
+  for (int a = 0; a < 3; ++a)
+    key |= static_cast<std::uint64_t>(std::clamp(std::floor(g[a]), 0.0, 2097151.0)) << (21 * a);
+  return key;
+}
+
+/** One representative per occupied voxel: the lowest-index point in it. The voxel edge is set
+ * so that about \a target voxels are occupied: starting from 2.5 times the median
+ * nearest-neighbour spacing of an evenly strided subsample, it is corrected twice by
+ * sqrt(count / target) (a surface's voxel count goes as 1/h²), counting on a 4·target-point
+ * subsample. node_of_point[i] becomes the voxel number of point i (-1 for points not in
+ * \a finite); reps lists the representatives in voxel-key order (spatially coherent, which the
+ * data term's search likes).
+ */
+void
+sampleVoxelRepresentatives(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+                           const std::vector<int>& finite, std::size_t target,
+                           std::vector<int>& reps, std::vector<int>& node_of_point)
+{
+  const pcl::PointCloud<pcl::PointXYZ>& c = *cloud;
+  const auto strided = [&](std::size_t count) {
+    auto sample = std::make_shared<pcl::Indices>();
+    const std::size_t stride = std::max<std::size_t>(1, finite.size() / count);
+    for (std::size_t k = 0; k < finite.size(); k += stride)
+      sample->push_back(finite[k]);
+    return sample;
+  };
+  const auto sample = strided(target);
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud(cloud, sample);
+  std::vector<float> spacing(sample->size(), 0.0f);
+#pragma omp parallel for schedule(static)
+  for (long k = 0; k < static_cast<long>(sample->size()); ++k) {
+    pcl::Indices found;
+    std::vector<float> sq;
+    if (tree.nearestKSearch(c[(*sample)[k]], 2, found, sq) == 2)
+      spacing[k] = std::sqrt(sq[1]);
+  }
+  std::nth_element(spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
+  Eigen::Vector3d lo = c[finite[0]].getVector3fMap().cast<double>(), hi = lo;
+  for (int i : finite) {
+    lo = lo.cwiseMin(c[i].getVector3fMap().cast<double>());
+    hi = hi.cwiseMax(c[i].getVector3fMap().cast<double>());
+  }
+  // 21 bits per axis bound the smallest edge; coincident points fall back to a box-sized grid.
+  const double smallest = (hi - lo).maxCoeff() / 2097151.0;
+  double h = std::max(2.5 * spacing[spacing.size() / 2], smallest);
+  if (!(h > 0.0))
+    h = 1.0;
+  const auto calibration = strided(4 * target);
+  std::vector<std::uint64_t> keys(calibration->size());
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::size_t k = 0; k < keys.size(); ++k)
+      keys[k] = voxelKey(c[(*calibration)[k]], lo, h);
+    std::sort(keys.begin(), keys.end());
+    const double count =
+        static_cast<double>(std::unique(keys.begin(), keys.end()) - keys.begin());
+    h = std::max(h * std::sqrt(count / static_cast<double>(target)), smallest);
+  }
+
+  std::vector<std::pair<std::uint64_t, int>> keyed(finite.size());
+  for (std::size_t k = 0; k < finite.size(); ++k)
+    keyed[k] = {voxelKey(c[finite[k]], lo, h), finite[k]};
+  std::sort(keyed.begin(), keyed.end());
+  reps.clear();
+  for (std::size_t k = 0; k < keyed.size(); ++k) {
+    if (k == 0 || keyed[k].first != keyed[k - 1].first)
+      reps.push_back(keyed[k].second); // lowest index of its voxel
+    node_of_point[keyed[k].second] = static_cast<int>(reps.size()) - 1;
+  }
+}
+
+} // namespace
+
 void
 CloudLabelTransfer::setNeighbourCount(int k)
 {
@@ -273,31 +356,40 @@ CloudLabelTransfer::transfer(std::vector<int>& point_labels)
   }
   const pcl::PointCloud<pcl::PointXYZ>& cloud = *cloud_;
   if (!nodes_valid_) {
-    finite_.clear();
+    std::vector<int> finite;
     for (std::size_t i = 0; i < cloud.size(); ++i)
       if (pcl::isFinite(cloud[i]))
-        finite_.push_back(static_cast<int>(i));
+        finite.push_back(static_cast<int>(i));
+    node_of_point_.assign(cloud.size(), -1);
+    if (max_graph_points_ > 0 && finite.size() > max_graph_points_)
+      sampleVoxelRepresentatives(cloud_, finite, max_graph_points_, nodes_, node_of_point_);
+    else {
+      nodes_ = finite;
+      for (std::size_t k = 0; k < finite.size(); ++k)
+        node_of_point_[finite[k]] = static_cast<int>(k);
+    }
     nodes_valid_ = true;
   }
-  if (finite_.empty()) {
+  if (nodes_.empty()) {
     PCL_ERROR("[segmat::CloudLabelTransfer::transfer] no point has finite coordinates.\n");
     return false;
   }
   // The neighbour graph is only needed when there is something to cut (and then kept).
   if (parts_.size() > 1 && (!edges_valid_ || edges_omega_ != omega_)) {
-    solver_.setEdges(computeCloudSmoothnessEdges(cloud_, normals_, finite_, k_, omega_));
+    solver_.setEdges(computeCloudSmoothnessEdges(cloud_, normals_, nodes_, k_, omega_));
     edges_valid_ = true;
     edges_omega_ = omega_;
   }
-  std::vector<Eigen::Vector3d> positions(finite_.size());
-  for (std::size_t k = 0; k < finite_.size(); ++k)
-    positions[k] = cloud[finite_[k]].getVector3fMap().cast<double>();
+  std::vector<Eigen::Vector3d> positions(nodes_.size());
+  for (std::size_t k = 0; k < nodes_.size(); ++k)
+    positions[k] = cloud[nodes_[k]].getVector3fMap().cast<double>();
   std::vector<int> labels;
   if (!solve("CloudLabelTransfer", positions, labels))
     return false;
   point_labels.assign(cloud.size(), -1);
-  for (std::size_t k = 0; k < finite_.size(); ++k)
-    point_labels[finite_[k]] = labels[k];
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    if (node_of_point_[i] >= 0)
+      point_labels[i] = labels[node_of_point_[i]];
   return true;
 }
 
