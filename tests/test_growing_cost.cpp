@@ -214,13 +214,24 @@ TEST(GrowingCost, PointPairsUseUndirectedNormals)
 
 TEST(GrowingCost, NaNNeverGrows)
 {
+  const double inf = std::numeric_limits<double>::infinity();
   GrowingCostWeights w;
-  EXPECT_EQ(combineGrowingCost(NAN, 0.0, 1.0, w), 1.5);
-  EXPECT_EQ(combineGrowingCost(NAN, 0.0, NAN, w), std::numeric_limits<double>::infinity());
-  EXPECT_EQ(combineGrowingCost(0.0, 0.0, NAN, w), 0.0);
+  EXPECT_EQ(combineGrowingCost(NAN, 0.0, 1.0, w), inf);
+  EXPECT_EQ(combineGrowingCost(0.0, 0.0, NAN, w), inf);
+  EXPECT_EQ(combineGrowingCost(0.0, 0.0, 0.5, w), 0.0);
   w.use_primitive_term = false;
-  EXPECT_EQ(combineGrowingCost(0.0, NAN, 0.0, w), std::numeric_limits<double>::infinity());
-  EXPECT_FALSE(combineGrowingCost(NAN, NAN, NAN, GrowingCostWeights()) <= 0.015);
+  EXPECT_EQ(combineGrowingCost(0.0, NAN, 0.0, w), inf);
+  EXPECT_EQ(combineGrowingCost(0.0, 0.0, NAN, w), 0.0); // the unused term does not matter
+  // NaN data: radius, then normal.
+  MatNode a, b;
+  a.mean_radius = 0.1;
+  b.mean_radius = NAN;
+  EXPECT_TRUE(std::isnan(radiusCost(a, b)));
+  EXPECT_TRUE(std::isnan(radiusCost(b, a)));
+  b.mean_radius = 0.1;
+  a.normal = Eigen::Vector3d(0, 0, 1);
+  b.normal = Eigen::Vector3d(NAN, 0, 0);
+  EXPECT_TRUE(std::isnan(angleCost(a, b, {})));
 }
 
 TEST(GrowingCost, Thresholds)

@@ -1,11 +1,14 @@
 // Thin-part detection on a structured MAT and transfer to base nodes (reference-facts §3.2, §3.4).
 #include <segmat/geometry/medial_mesh.h>
+#include <segmat/io/ma.h>
 #include <segmat/segmentation/mat_graph.h>
 #include <segmat/segmentation/structure_tags.h>
 
 #include <gtest/gtest.h>
+#include <pcl/console/print.h>
 
 #include <cmath>
+#include <string>
 
 using namespace segmat;
 
@@ -116,4 +119,19 @@ TEST(StructureTags, EmptyStructuredMatTagsEverythingBulky)
   EXPECT_EQ(tags.numThinParts(), 0);
   EXPECT_EQ(tags.node_tag, (std::vector<int>{0, 0}));
   EXPECT_EQ(computeStructureTags(sheetAndLine(), MatGraph()).node_tag.size(), 0u);
+}
+
+TEST(StructureTags, TeddyHasNoThinPart)
+{
+  // Reference run (reference-facts §7): teddy's structured MAT (4 triangles + 9 pure edges) has
+  // 8 normal components and no thin part, so every base tag is 0.
+  const std::string dir = std::string(SEGMAT_DATA_DIR) + "/teddy/";
+  pcl::console::setVerbosityLevel(pcl::console::L_ERROR); // the smat's header is wrong
+  const MedialMesh smat = io::loadMa(dir + "teddy_smat.ma");
+  pcl::console::setVerbosityLevel(pcl::console::L_INFO);
+  const MatGraph base = MatGraph::fromMedialMesh(io::loadMa(dir + "teddy_mat.ma"));
+  EXPECT_EQ(smat.numTriangles(), 4u);
+  const StructureTags tags = computeStructureTags(smat, base);
+  EXPECT_EQ(tags.numThinParts(), 0);
+  EXPECT_EQ(tags.node_tag, std::vector<int>(3747, 0));
 }

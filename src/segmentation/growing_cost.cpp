@@ -37,10 +37,11 @@ coneDirection(const MatNode& cone, const std::vector<Eigen::Vector3d>& centers)
   return len > 0.0 ? Eigen::Vector3d(d / len) : Eigen::Vector3d::Zero();
 }
 
+/** Exactly zero (a NaN vector is not zero: its NaN must reach the cost, see combineGrowingCost). */
 bool
 isZero(const Eigen::Vector3d& v)
 {
-  return !(v.squaredNorm() > 0.0);
+  return v.squaredNorm() == 0.0;
 }
 
 /** Normals of two sheet-like nodes turned towards the same side (compute_face_consistent_normal):
@@ -171,10 +172,12 @@ coneConePrimitiveCost(const MatNode& a, const MatNode& b,
 double
 radiusCost(const MatNode& a, const MatNode& b)
 {
+  if (std::isnan(a.mean_radius) || std::isnan(b.mean_radius))
+    return std::numeric_limits<double>::quiet_NaN(); // std::min/max would drop the NaN
   const double lo = std::min(a.mean_radius, b.mean_radius);
   const double hi = std::max(a.mean_radius, b.mean_radius);
   if (!(lo > 0.0))
-    return hi == 0.0 ? 0.0 : kInf; // guard r̄ = 0 (reference-facts §6.4); NaN → inf
+    return hi == 0.0 ? 0.0 : kInf; // guard r̄ = 0 (reference-facts §6.4)
   return hi / lo - 1.0;
 }
 
@@ -200,15 +203,14 @@ double
 combineGrowingCost(double radius_cost, double angle_cost, double primitive_cost,
                    const GrowingCostWeights& weights)
 {
-  double inner = radius_cost + weights.alpha * angle_cost;
-  if (std::isnan(inner))
-    inner = kInf; // NaN never means "grow" (fix of reference-facts §3.5)
-  if (!weights.use_primitive_term)
-    return inner;
-  double outer = weights.lambda * primitive_cost;
-  if (std::isnan(outer))
-    outer = kInf;
-  return std::min(inner, outer);
+  // A NaN term (NaN input data) makes the whole cost +inf: NaN never means "grow" (fix of
+  // reference-facts §3.5, where NaN failed the rejecting comparison and so accepted the node).
+  const bool use_primitive = weights.use_primitive_term;
+  if (std::isnan(radius_cost) || std::isnan(angle_cost) ||
+      (use_primitive && std::isnan(primitive_cost)))
+    return kInf;
+  const double inner = radius_cost + weights.alpha * angle_cost;
+  return use_primitive ? std::min(inner, weights.lambda * primitive_cost) : inner;
 }
 
 double

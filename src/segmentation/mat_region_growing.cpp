@@ -37,25 +37,27 @@ public:
       lo = lo.cwiseMin(c);
       hi = hi.cwiseMax(c);
     }
-    margin_ = centers.empty() ? 0.0 : 1e-5 * (hi - lo).norm() + 1e-12;
+    // Non-finite centres are left out of the tree (PCL maps the indices back).
+    cloud->is_dense = lo.allFinite() && hi.allFinite();
+    margin_ = cloud->is_dense && !centers.empty() ? 1e-5 * (hi - lo).norm() + 1e-12 : 1e-6;
     tree_.setSortedResults(false);
     tree_.setInputCloud(cloud);
   }
 
-  /** Spheres whose centre lies strictly closer than \a radius to \a q. */
+  /** Spheres whose centre lies strictly closer than \a radius to \a q, in no particular order
+   * (callers sort or de-duplicate what they keep). */
   void
   within(const Eigen::Vector3d& q, double radius, std::vector<int>& out)
   {
     out.clear();
-    if (!(radius > 0.0) || centers_.empty())
-      return;
+    if (!(radius > 0.0) || !std::isfinite(radius) || !q.allFinite() || centers_.empty())
+      return; // a non-finite sphere contains nothing (and PCL asserts on NaN queries)
     const pcl::PointXYZ p(static_cast<float>(q.x()), static_cast<float>(q.y()),
                           static_cast<float>(q.z()));
     tree_.radiusSearch(p, radius * (1.0 + 1e-6) + margin_, indices_, sq_dist_);
     for (int s : indices_)
       if ((centers_[s] - q).norm() < radius)
         out.push_back(s);
-    std::sort(out.begin(), out.end()); // FLANN's order is not part of the result
   }
 
 private:
@@ -232,48 +234,45 @@ MatRegionGrowing::setStructureTags(const StructureTags& tags)
   tags_ = tags;
 }
 
+namespace {
+/** Assigns a validated setter argument, or warns and keeps the old value (PCL style). */
+void
+assignChecked(double& field, double value, bool valid, const char* setter, const char* rule)
+{
+  if (!valid) {
+    PCL_WARN("[segmat::MatRegionGrowing::%s] %g is not %s; keeping %g.\n", setter, value, rule,
+             field);
+    return;
+  }
+  field = value;
+}
+} // namespace
+
 void
 MatRegionGrowing::setGrowingThreshold(double delta0)
 {
-  if (!(delta0 > 0.0) || !std::isfinite(delta0)) {
-    PCL_WARN("[segmat::MatRegionGrowing::setGrowingThreshold] %g is not > 0; keeping %g.\n",
-             delta0, delta0_);
-    return;
-  }
-  delta0_ = delta0;
+  assignChecked(delta0_, delta0, delta0 > 0.0 && std::isfinite(delta0), "setGrowingThreshold",
+                "finite and > 0");
 }
 
 void
 MatRegionGrowing::setMinRegionFraction(double eta)
 {
-  if (!(eta >= 0.0 && eta <= 1.0)) {
-    PCL_WARN("[segmat::MatRegionGrowing::setMinRegionFraction] %g is not in [0, 1]; keeping %g.\n",
-             eta, eta_);
-    return;
-  }
-  eta_ = eta;
+  assignChecked(eta_, eta, eta >= 0.0 && eta <= 1.0, "setMinRegionFraction", "in [0, 1]");
 }
 
 void
 MatRegionGrowing::setAngleWeight(double alpha)
 {
-  if (!(alpha >= 0.0) || !std::isfinite(alpha)) {
-    PCL_WARN("[segmat::MatRegionGrowing::setAngleWeight] %g is not >= 0; keeping %g.\n", alpha,
-             alpha_);
-    return;
-  }
-  alpha_ = alpha;
+  assignChecked(alpha_, alpha, alpha >= 0.0 && std::isfinite(alpha), "setAngleWeight",
+                "finite and >= 0");
 }
 
 void
 MatRegionGrowing::setPrimitiveWeight(double lambda)
 {
-  if (!(lambda >= 0.0) || !std::isfinite(lambda)) {
-    PCL_WARN("[segmat::MatRegionGrowing::setPrimitiveWeight] %g is not >= 0; keeping %g.\n",
-             lambda, lambda_);
-    return;
-  }
-  lambda_ = lambda;
+  assignChecked(lambda_, lambda, lambda >= 0.0 && std::isfinite(lambda), "setPrimitiveWeight",
+                "finite and >= 0");
 }
 
 void
@@ -313,13 +312,17 @@ MatRegionGrowing::extract(std::vector<pcl::PointIndices>& parts)
   std::vector<int> tag(n, 0);
   if (tags_.node_tag.size() == static_cast<std::size_t>(n)) {
     tag = tags_.node_tag;
+    int unknown = 0;
     for (int& t : tag)
       if (t < 0 || t >= static_cast<int>(tags_.tag_ratio.size()) ||
           !std::isfinite(tags_.tag_ratio[t])) {
-        PCL_WARN("[segmat::MatRegionGrowing::extract] Tag %d has no finite ratio; treated as 0.\n",
-                 t);
         t = 0;
+        ++unknown;
       }
+    if (unknown > 0)
+      PCL_WARN("[segmat::MatRegionGrowing::extract] %d nodes carry a tag without a finite "
+               "ratio; treated as 0.\n",
+               unknown);
   }
   else if (!tags_.node_tag.empty()) {
     PCL_WARN("[segmat::MatRegionGrowing::extract] %zu structure tags for %d nodes; ignored.\n",

@@ -22,7 +22,8 @@ struct GrowingCostWeights
 
 /** \brief Radius term C_r = max(r̄_a, r̄_b) / min(r̄_a, r̄_b) − 1 (>= 0).
  *
- * Guards r̄ = 0 (reference-facts §6.4): two zero mean radii give 0, one gives +inf.
+ * Guards r̄ = 0 (reference-facts §6.4): two zero mean radii give 0, one gives +inf; a NaN radius
+ * gives NaN.
  */
 double
 radiusCost(const MatNode& a, const MatNode& b);
@@ -65,8 +66,8 @@ primitiveCost(const MatNode& a, const MatNode& b, const std::vector<Eigen::Vecto
 
 /** \brief min(C_r + α·C_θ, λ·C_mp), or C_r + α·C_θ when the primitive term is off.
  *
- * A NaN term counts as +inf: it never means "grow" (fix of reference-facts §3.5, where a NaN made
- * every comparison false and so accepted the node).
+ * A NaN term (from NaN input data) makes the cost +inf: it never means "grow" (fix of
+ * reference-facts §3.5, where a NaN made every comparison false and so accepted the node).
  */
 double
 combineGrowingCost(double radius_cost, double angle_cost, double primitive_cost,

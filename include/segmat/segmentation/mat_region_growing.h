@@ -182,7 +182,9 @@ public:
   extract(std::vector<pcl::PointIndices>& parts);
 
   /** \brief Per final part, its grown ("coarse") nodes, ascending — the nodes the surface data
-   * term may use (reference-facts §3.10). Valid after extract().
+   * term may use (reference-facts §3.10). Never empty for a part: when no region reaches the
+   * minimal size, the leftover components become the parts and all their nodes count as coarse.
+   * Valid after extract().
    */
   const std::vector<std::vector<int>>&
   getCoarseParts() const
