@@ -106,7 +106,7 @@ row(const segmat::PsbScores& s)
       std::snprintf(buffer, sizeof buffer, "%-10.6f", v);
     out += buffer;
   }
-  return out;
+  return out.substr(0, out.find_last_not_of(' ') + 1);
 }
 
 int

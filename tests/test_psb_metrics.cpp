@@ -68,6 +68,24 @@ scored(const PsbEvaluator& e, const std::vector<int>& s1, const std::vector<int>
   return s;
 }
 
+// Every column at once, in the fixture's order plus LCEf; a NaN \a cd means "undefined".
+void
+expectScores(const PsbScores& s, double cd, double hd, double rm, double rf, double ri,
+             double gce, double lce, double gcef, double lcef)
+{
+  if (std::isnan(cd))
+    EXPECT_FALSE(s.hasCD()) << s.CD;
+  else
+    EXPECT_NEAR(s.CD, cd, 1e-12);
+  const double got[8] = {s.HD, s.Rm, s.Rf, s.RI, s.GCE, s.LCE, s.GCEf, s.LCEf};
+  const double want[8] = {hd, rm, rf, ri, gce, lce, gcef, lcef};
+  const char* names[8] = {"HD", "Rm", "Rf", "RI", "GCE", "LCE", "GCEf", "LCEf"};
+  for (int c = 0; c < 8; ++c)
+    EXPECT_NEAR(got[c], want[c], 1e-12) << names[c];
+}
+
+const double kUndefined = std::nan("");
+
 } // namespace
 
 TEST(PsbMetrics, StripGeometry)
@@ -84,16 +102,8 @@ TEST(PsbMetrics, IdenticalSegmentationsScoreZero)
 {
   const PsbEvaluator e(strip());
   const PsbScores s = scored(e, kP, kP);
-  EXPECT_DOUBLE_EQ(s.GCE, 0.0);
-  EXPECT_DOUBLE_EQ(s.LCE, 0.0);
-  EXPECT_DOUBLE_EQ(s.GCEf, 0.0);
-  EXPECT_DOUBLE_EQ(s.LCEf, 0.0);
-  EXPECT_DOUBLE_EQ(s.HD, 0.0);
-  EXPECT_DOUBLE_EQ(s.Rm, 0.0);
-  EXPECT_DOUBLE_EQ(s.Rf, 0.0);
-  EXPECT_DOUBLE_EQ(s.RI, 0.0);
   ASSERT_TRUE(s.hasCD()); // both have a cut: CD is defined, and 0
-  EXPECT_DOUBLE_EQ(s.CD, 0.0);
+  expectScores(s, 0, 0, 0, 0, 0, 0, 0, 0, 0);
   EXPECT_EQ(s.count, 1);
   EXPECT_EQ(s.cd_count, 1);
 }
@@ -113,25 +123,11 @@ TEST(PsbMetrics, TwoDifferentCutsByHand)
   //     (1 + 1 + 1 + 1) / 4 / R = 1/R.
   const PsbEvaluator e(strip());
   const PsbScores s = scored(e, kP, kQ);
-  EXPECT_NEAR(s.GCE, 0.25, 1e-12);
-  EXPECT_NEAR(s.LCE, 0.125, 1e-12);
-  EXPECT_NEAR(s.GCEf, 0.25, 1e-12);
-  EXPECT_NEAR(s.LCEf, 0.125, 1e-12);
-  EXPECT_NEAR(s.Rm, 0.25, 1e-12);
-  EXPECT_NEAR(s.Rf, 0.25, 1e-12);
-  EXPECT_NEAR(s.HD, 0.25, 1e-12);
-  EXPECT_NEAR(s.RI, 0.5, 1e-12);
-  ASSERT_TRUE(s.hasCD());
-  EXPECT_NEAR(s.CD, 1.0 / kStripRadius, 1e-12);
+  expectScores(s, 1.0 / kStripRadius, 0.25, 0.25, 0.25, 0.5, 0.25, 0.125, 0.25, 0.125);
 
-  // Swapping the two swaps Rm and Rf and changes nothing else.
-  const PsbScores t = scored(e, kQ, kP);
-  EXPECT_NEAR(t.Rm, s.Rf, 1e-12);
-  EXPECT_NEAR(t.Rf, s.Rm, 1e-12);
-  EXPECT_NEAR(t.GCE, s.GCE, 1e-12);
-  EXPECT_NEAR(t.LCE, s.LCE, 1e-12);
-  EXPECT_NEAR(t.RI, s.RI, 1e-12);
-  EXPECT_NEAR(t.CD, s.CD, 1e-12);
+  // Swapping the two changes nothing here (Rm = Rf); see SingleSegmentPrediction for Rm ≠ Rf.
+  expectScores(scored(e, kQ, kP), 1.0 / kStripRadius, 0.25, 0.25, 0.25, 0.5, 0.25, 0.125, 0.25,
+               0.125);
 }
 
 TEST(PsbMetrics, AreaVersusFaceCount)
@@ -172,15 +168,9 @@ TEST(PsbMetrics, SingleSegmentPrediction)
   // Rand: (C(8,2) + 12 − 2·12)/24 = (28 − 12)/24 = 2/3.
   const PsbEvaluator e(strip());
   const PsbScores s = scored(e, kOne, kP);
-  EXPECT_EQ(s.GCE, 0.0);
-  EXPECT_EQ(s.LCE, 0.0);
-  EXPECT_EQ(s.GCEf, 0.0);
-  EXPECT_EQ(s.LCEf, 0.0);
-  EXPECT_NEAR(s.Rm, 0.0, 1e-12);
-  EXPECT_NEAR(s.Rf, 0.5, 1e-12);
-  EXPECT_NEAR(s.HD, 0.25, 1e-12);
-  EXPECT_NEAR(s.RI, 2.0 / 3.0, 1e-12);
-  EXPECT_FALSE(s.hasCD());
+  expectScores(s, kUndefined, 0.25, 0.0, 0.5, 2.0 / 3.0, 0, 0, 0, 0);
+  // Swapped (P predicted, one segment as truth): Rm and Rf swap, nothing else changes.
+  expectScores(scored(e, kP, kOne), kUndefined, 0.25, 0.5, 0.0, 2.0 / 3.0, 0, 0, 0, 0);
   EXPECT_EQ(s.cd_count, 0);
   // Neither has a cut: still undefined.
   EXPECT_FALSE(scored(e, kOne, kOne).hasCD());
@@ -188,7 +178,7 @@ TEST(PsbMetrics, SingleSegmentPrediction)
 
 TEST(PsbMetrics, OneSegmentPerFacePrediction)
 {
-  // K1 = n: trivial case, CE = 0. Rm = (4 − 2·½)/4 = 3/4, Rf = 0.
+  // K1 = n: trivial case, CE = 0. Rm = (4 − 2·½)/4 = 3/4, Rf = 0, HD = 3/8.
   // Rand: (0 + 12 − 0)/24 = 1/2.
   // CD: every interior edge is cut, so the cut vertices are all but t0 and b4:
   //     Z1 = {b0,b1,b2,b3,t1,t2,t3,t4}, Z_P = {b2,t2} (both in Z1, distance 0 to cut 1).
@@ -196,13 +186,7 @@ TEST(PsbMetrics, OneSegmentPerFacePrediction)
   //     t4 2 (the diagonal routes are 1+√2 > 2) → Σ = 8. CD = (8 + 0)/(8 + 2)/R = 0.8/R.
   const PsbEvaluator e(strip());
   const PsbScores s = scored(e, onePerFace(8), kP);
-  EXPECT_EQ(s.GCE, 0.0);
-  EXPECT_EQ(s.LCE, 0.0);
-  EXPECT_NEAR(s.Rm, 0.75, 1e-12);
-  EXPECT_NEAR(s.Rf, 0.0, 1e-12);
-  EXPECT_NEAR(s.RI, 0.5, 1e-12);
-  ASSERT_TRUE(s.hasCD());
-  EXPECT_NEAR(s.CD, 0.8 / kStripRadius, 1e-12);
+  expectScores(s, 0.8 / kStripRadius, 0.375, 0.75, 0.0, 0.5, 0, 0, 0, 0);
 }
 
 TEST(PsbMetrics, LabelValuesDoNotMatter)

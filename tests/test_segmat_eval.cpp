@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -66,7 +67,7 @@ std::string
 predictionFolder(const std::string& name, const std::vector<int>& models)
 {
   const std::string dir = test::scratchDir() + name;
-  std::system(("mkdir -p " + dir).c_str());
+  std::filesystem::create_directories(dir);
   for (int m : models)
     io::saveSeg(dir + "/" + std::to_string(m) + ".seg", io::loadSeg(human(m, 0)));
   return dir;

@@ -88,7 +88,9 @@ public:
   /** \brief An evaluator with no mesh; call setInputMesh() before scoring. */
   PsbEvaluator() = default;
 
-  /** \brief Builds the evaluator for \a mesh (see setInputMesh()). */
+  /** \brief Builds the evaluator for \a mesh (see setInputMesh(); check ready() afterwards).
+   * \param[in] mesh the segmented mesh
+   */
   explicit PsbEvaluator(const TriangleMesh& mesh) { setInputMesh(mesh); }
 
   /** \brief Caches what scoring needs of \a mesh.
