@@ -255,6 +255,11 @@ TEST(LabelTransferTerms, PartDistanceCostsMatchBruteForce)
       EXPECT_EQ(costs(i, l), std::floor(std::max(0.0, best) / diagonal * 1e5)) << i << " " << l;
     }
   EXPECT_EQ(costs(0, 3), 1e9); // a part without spheres never wins
+  // A non-finite position has no preference.
+  const Eigen::MatrixXd nan_costs = computePartDistanceCosts(
+      {Eigen::Vector3d(std::nan(""), 0, 0), queries[0]}, graph, parts);
+  EXPECT_EQ(nan_costs.row(0), Eigen::RowVector4d(0, 0, 0, 1e9)); // the empty part still never wins
+  EXPECT_EQ(nan_costs.row(1), costs.row(0));
 }
 
 TEST(LabelTransferTerms, CompactLabels)

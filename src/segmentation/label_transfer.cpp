@@ -53,6 +53,10 @@ computePartDistanceCosts(const std::vector<Eigen::Vector3d>& positions, const Ma
     int hint = -1;
 #pragma omp parallel for schedule(static) firstprivate(hint)
     for (long i = 0; i < n; ++i) {
+      if (!positions[i].allFinite()) {
+        costs(i, l) = 0.0; // no preference: the neighbours decide
+        continue;
+      }
       const double d = tree.signedDistance(positions[i], 0.0, &hint);
       costs(i, l) = d > 0.0 ? std::floor(d * scale) : 0.0;
     }
