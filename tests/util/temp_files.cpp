@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -15,18 +16,32 @@
 namespace segmat {
 namespace test {
 
-std::string
-scratchDir()
+namespace {
+// The per-process directory, removed with everything in it when the test program exits.
+struct ScratchDirectory
 {
-  static const std::string dir = [] {
+  std::string path;
+  ScratchDirectory()
+  {
     std::string base = ::testing::TempDir();
     if (base.empty() || base.back() != '/')
       base += '/';
-    const std::string d = base + "segmat_test_" + std::to_string(::getpid()) + "/";
-    ::mkdir(d.c_str(), 0700);
-    return d;
-  }();
-  return dir;
+    path = base + "segmat_test_" + std::to_string(::getpid()) + "/";
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchDirectory()
+  {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+} // namespace
+
+std::string
+scratchDir()
+{
+  static const ScratchDirectory dir;
+  return dir.path;
 }
 
 std::string
@@ -61,11 +76,11 @@ throwsFileError(const std::function<void()>& action, const std::string& path, lo
   } catch (const segmat::Error& e) {
     const std::string what = e.what();
     if (e.path() != path)
-      return ::testing::AssertionFailure() << "path is '" << e.path() << "', not '" << path
-                                           << "': " << what;
+      return ::testing::AssertionFailure()
+             << "path is '" << e.path() << "', not '" << path << "': " << what;
     if (e.line() != line)
-      return ::testing::AssertionFailure() << "line is " << e.line() << ", not " << line << ": "
-                                           << what;
+      return ::testing::AssertionFailure()
+             << "line is " << e.line() << ", not " << line << ": " << what;
     if (what.find(path) == std::string::npos)
       return ::testing::AssertionFailure() << "message lacks the path: " << what;
     if (line > 0 && what.find(":" + std::to_string(line) + ":") == std::string::npos)
@@ -77,6 +92,14 @@ throwsFileError(const std::function<void()>& action, const std::string& path, lo
     return ::testing::AssertionFailure() << "threw another exception: " << e.what();
   }
   return ::testing::AssertionFailure() << "did not throw";
+}
+
+::testing::AssertionResult
+loadingFails(const std::function<void(const std::string& path)>& load, const std::string& name,
+             const std::string& bytes, long line, const std::string& needle)
+{
+  const std::string path = writeScratchFile(name, bytes);
+  return throwsFileError([&] { load(path); }, path, line, needle);
 }
 
 ::testing::AssertionResult
