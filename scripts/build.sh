@@ -4,5 +4,12 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/install_deps.sh"
 jobs="${SEGMAT_JOBS:-$(nproc)}"
-cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build "$root/build" -j "$jobs"
+mkdir -p "$root/build"
+log="$root/build/build.log"
+echo "segmat: building into $root/build (log: $log)"
+if ! { cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release "$@" &&
+       cmake --build "$root/build" -j "$jobs"; } >"$log" 2>&1; then
+  tail -n 60 "$log" >&2
+  echo "segmat: build failed (full log: $log)" >&2
+  exit 1
+fi

@@ -3,123 +3,115 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <segmat/geometry/face_orientation.h>
-#include <segmat/geometry/weld_points.h>
-
-#include "edge_records.h"
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <array>
-#include <deque>
+#include <cmath>
+#include <tuple>
 
 namespace segmat {
+namespace {
 
-std::size_t
-orientFacesOutward(TriangleMesh& mesh, double weld_tolerance)
+// +1 when face t walks v0→v1, −1 when it walks v1→v0, 0 when the edge is not a side of t.
+int
+edgeDirection(const Eigen::Vector3i& t, int v0, int v1)
 {
-  if (mesh.faces.empty())
-    return 0;
-  return orientFacesOutward(mesh, weldPoints(mesh.vertices, weld_tolerance));
+  for (int k = 0; k < 3; ++k) {
+    const int a = t[k], b = t[(k + 1) % 3];
+    if (a == v0 && b == v1)
+      return 1;
+    if (a == v1 && b == v0)
+      return -1;
+  }
+  return 0;
 }
 
-std::size_t
-orientFacesOutward(TriangleMesh& mesh, const std::vector<int>& rep)
+} // namespace
+
+std::vector<int>
+computeOutwardFaceSigns(const TriangleMesh& mesh, const std::vector<FaceAdjacency>& adjacency)
 {
-  const int nf = static_cast<int>(mesh.faces.size());
-  const int nv = static_cast<int>(std::min(mesh.vertices.size(), rep.size()));
-  if (nf == 0)
-    return 0;
-  auto corner = [&](int f, int k) {
-    const int v = mesh.faces[f][k];
-    return (v >= 0 && v < nv) ? rep[v] : -1;
-  };
-  auto usable = [&](int f) {
-    const int a = corner(f, 0), b = corner(f, 1), c = corner(f, 2);
-    return a >= 0 && b >= 0 && c >= 0 && a != b && b != c && a != c;
-  };
+  const int num_faces = static_cast<int>(mesh.numFaces());
+  std::vector<int> sign(num_faces, 1);
+  if (num_faces == 0)
+    return sign;
 
-  // (lo, hi, face, +1 when the face walks lo→hi) sorted so the faces of an edge are contiguous.
-  std::vector<std::array<int, 4>> records;
-  records.reserve(static_cast<std::size_t>(nf) * 3);
-  for (int f = 0; f < nf; ++f) {
-    if (!usable(f))
-      continue;
-    for (int k = 0; k < 3; ++k) {
-      const int a = corner(f, k), b = corner(f, (k + 1) % 3);
-      records.push_back({std::min(a, b), std::max(a, b), f, a < b ? 1 : 0});
-    }
-  }
-  detail::sortEdgeRecords(records, nv);
-
-  // Manifold edges only: link (f, g, same) where `same` says whether the two faces walk the edge
-  // in the same direction, i.e. need opposite flip states.
-  // At most three links per face (one per side): flat arrays, no per-face allocation.
-  std::vector<std::array<int, 2>> links(static_cast<std::size_t>(nf) * 3);
-  std::vector<unsigned char> num_links(nf, 0);
-  for (std::size_t i = 0; i < records.size();) {
-    std::size_t j = i;
-    while (j < records.size() && records[j][0] == records[i][0] && records[j][1] == records[i][1])
+  // Manifold edges are those that occur in exactly one face pair.
+  std::vector<int> order(adjacency.size());
+  for (std::size_t k = 0; k < order.size(); ++k)
+    order[k] = static_cast<int>(k);
+  std::sort(order.begin(), order.end(), [&](int x, int y) {
+    return std::tie(adjacency[x].v0, adjacency[x].v1, x) <
+           std::tie(adjacency[y].v0, adjacency[y].v1, y);
+  });
+  std::vector<std::vector<int>> links(num_faces); // adjacency record indices per face
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i + 1;
+    while (j < order.size() && adjacency[order[j]].v0 == adjacency[order[i]].v0 &&
+           adjacency[order[j]].v1 == adjacency[order[i]].v1)
       ++j;
-    if (j - i == 2 && records[i][2] != records[i + 1][2]) {
-      const int f = records[i][2], g = records[i + 1][2];
-      const int same = records[i][3] == records[i + 1][3] ? 1 : 0;
-      links[3 * f + num_links[f]++] = {g, same};
-      links[3 * g + num_links[g]++] = {f, same};
+    if (j == i + 1) {
+      const FaceAdjacency& p = adjacency[order[i]];
+      links[p.face_a].push_back(order[i]);
+      links[p.face_b].push_back(order[i]);
     }
     i = j;
   }
+  for (auto& l : links)
+    std::sort(l.begin(), l.end()); // deterministic visiting order
 
-  std::vector<int> flip(nf, 0), component(nf, -1);
-  std::vector<int> members;
-  std::deque<int> queue;
-  std::size_t flipped = 0;
-  int num_components = 0;
-  for (int seed = 0; seed < nf; ++seed) {
-    if (component[seed] >= 0 || !usable(seed))
+  std::vector<int> component(num_faces, -1);
+  std::vector<int> queue;
+  queue.reserve(num_faces);
+  for (int seed = 0; seed < num_faces; ++seed) {
+    if (component[seed] >= 0)
       continue;
-    const int id = num_components++;
-    members.clear();
-    component[seed] = id;
+    queue.clear();
     queue.push_back(seed);
-    while (!queue.empty()) {
-      const int f = queue.front();
-      queue.pop_front();
-      members.push_back(f);
-      for (int l = 0; l < num_links[f]; ++l) {
-        const auto& link = links[3 * f + l];
-        const int g = link[0];
+    component[seed] = seed;
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const int f = queue[head];
+      for (int k : links[f]) {
+        const FaceAdjacency& p = adjacency[k];
+        const int g = p.face_a == f ? p.face_b : p.face_a;
         if (component[g] >= 0)
           continue;
-        component[g] = id;
-        flip[g] = flip[f] ^ link[1];
+        // Consistent neighbours walk the shared edge in opposite directions.
+        const int df = edgeDirection(mesh.faces[f], p.v0, p.v1);
+        const int dg = edgeDirection(mesh.faces[g], p.v0, p.v1);
+        sign[g] = df * dg > 0 ? -sign[f] : sign[f];
+        component[g] = seed;
         queue.push_back(g);
       }
     }
-    // Signed volume about the component's centroid (origin-independent for closed components,
-    // and less sensitive to small holes than the volume about the origin).
-    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-    for (int f : members)
-      centroid += mesh.faceCentroid(f);
-    centroid /= static_cast<double>(members.size());
-    double six_volume = 0.0;
-    for (int f : members) {
-      const Eigen::Vector3d a = mesh.vertices[mesh.faces[f][0]] - centroid;
-      const Eigen::Vector3d b = mesh.vertices[mesh.faces[f][1]] - centroid;
-      const Eigen::Vector3d c = mesh.vertices[mesh.faces[f][2]] - centroid;
-      const double v = a.dot(b.cross(c));
-      six_volume += flip[f] ? -v : v;
-    }
-    if (six_volume < 0.0)
-      for (int f : members)
-        flip[f] ^= 1;
-    for (int f : members)
-      if (flip[f]) {
-        std::swap(mesh.faces[f][1], mesh.faces[f][2]);
-        ++flipped;
+    // Outward: non-negative signed volume about the component's centroid (translation-free for
+    // closed components, and a sensible choice for open ones).
+    // Faces with a non-finite corner are left out of both sums.
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    int finite = 0;
+    for (int f : queue) {
+      const Eigen::Vector3d c = mesh.faceCentroid(f);
+      if (c.allFinite()) {
+        centre += c;
+        ++finite;
       }
+    }
+    centre /= std::max(finite, 1);
+    double volume = 0.0;
+    for (int f : queue) {
+      const Eigen::Vector3i& t = mesh.faces[f];
+      const Eigen::Vector3d a = mesh.vertices[t[0]] - centre, b = mesh.vertices[t[1]] - centre,
+                            c = mesh.vertices[t[2]] - centre;
+      const double v = a.dot(b.cross(c));
+      if (std::isfinite(v))
+        volume += sign[f] * v;
+    }
+    if (volume < 0.0)
+      for (int f : queue)
+        sign[f] = -sign[f];
   }
-  return flipped;
+  return sign;
 }
 
 } // namespace segmat

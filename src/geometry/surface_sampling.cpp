@@ -6,6 +6,7 @@
 
 #include "edge_records.h"
 #include "point_bounds.h"
+#include "point_grid.h"
 
 #include <Eigen/Geometry>
 
@@ -152,59 +153,17 @@ thinPoints(const std::vector<Eigen::Vector3d>& points, double radius)
         kept.push_back(static_cast<int>(i));
     return kept;
   }
-  // Cells of size `radius` (a conflicting point is in the same or an adjacent cell), in a flat
-  // open-addressing table: cell key → first kept point, kept points chained through `next`.
-  std::size_t capacity = 64;
-  while (capacity < 2 * points.size())
-    capacity *= 2;
-  const std::uint64_t empty = ~std::uint64_t(0);
-  std::vector<std::uint64_t> keys(capacity, empty);
-  std::vector<int> heads(capacity, -1);
-  std::vector<int> next(points.size(), -1);
-  auto cellKey = [](std::int64_t x, std::int64_t y, std::int64_t z) {
-    // 21 bits per axis, wrapping around: cells that share a key only add candidates, which the
-    // distance test rejects, so the key need not be unique.
-    const std::uint64_t mask = (std::uint64_t(1) << 21) - 1;
-    return ((static_cast<std::uint64_t>(x) & mask) << 42) |
-           ((static_cast<std::uint64_t>(y) & mask) << 21) | (static_cast<std::uint64_t>(z) & mask);
-  };
-  auto slotOf = [&](std::uint64_t key) {
-    std::size_t slot =
-        static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & (capacity - 1);
-    while (keys[slot] != empty && keys[slot] != key)
-      slot = (slot + 1) & (capacity - 1);
-    return slot;
-  };
-  // Cell coordinates from the lowest corner, clamped into int64 range.
-  const Eigen::Vector3d origin = detail::lowestCorner(points);
-  const double inv = 1.0 / radius, radius2 = radius * radius;
-  auto cell = [&](double v, double o) {
-    return static_cast<std::int64_t>(std::min(4.0e18, std::floor((v - o) * inv)));
-  };
+  // Cells of size `radius`: a conflicting point is in the same or an adjacent cell.
+  detail::PointGrid grid(points, radius);
+  const double radius2 = radius * radius;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Eigen::Vector3d& p = points[i];
     if (!p.allFinite())
       continue;
-    const std::int64_t cx = cell(p.x(), origin.x());
-    const std::int64_t cy = cell(p.y(), origin.y());
-    const std::int64_t cz = cell(p.z(), origin.z());
-    bool free = true;
-    for (std::int64_t dx = -1; dx <= 1 && free; ++dx)
-      for (std::int64_t dy = -1; dy <= 1 && free; ++dy)
-        for (std::int64_t dz = -1; dz <= 1 && free; ++dz)
-          for (int j = heads[slotOf(cellKey(cx + dx, cy + dy, cz + dz))]; j >= 0; j = next[j])
-            if ((points[j] - p).squaredNorm() < radius2) {
-              free = false;
-              break;
-            }
-    if (free) {
-      const std::uint64_t key = cellKey(cx, cy, cz);
-      const std::size_t slot = slotOf(key);
-      keys[slot] = key;
-      next[i] = heads[slot];
-      heads[slot] = static_cast<int>(i);
-      kept.push_back(static_cast<int>(i));
-    }
+    if (grid.findNear(p, [&](int j) { return (points[j] - p).squaredNorm() < radius2; }))
+      continue;
+    grid.insert(static_cast<int>(i));
+    kept.push_back(static_cast<int>(i));
   }
   return kept;
 }

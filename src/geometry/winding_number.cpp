@@ -46,35 +46,46 @@ triangleSolidAngle(const Eigen::Matrix3d& t, const Eigen::Vector3d& q)
 
 WindingNumber::WindingNumber(const TriangleMesh& input, bool fix_orientation)
 {
-  // Vertices at equal positions are one vertex for orientation, closedness and edge identity.
+  // Vertices at equal positions are one vertex for orientation, closedness and edge identity:
+  // work on a welded copy that keeps only usable faces (indices in range, three distinct welded
+  // corners, finite coordinates), so unwelded "triangle soups" connect.
   const std::vector<int> welded = weldPoints(input.vertices, 0.0);
-  const TriangleMesh* mesh = &input;
-  TriangleMesh oriented;
-  if (fix_orientation) {
-    oriented = input;
-    num_flipped_ = orientFacesOutward(oriented, welded);
-    mesh = &oriented;
-  }
-  const int nv = static_cast<int>(mesh->vertices.size());
-  std::vector<Eigen::Matrix3d> triangles;
-  std::vector<Eigen::Vector3i> ids;
-  std::vector<std::array<int, 3>> directed; // (lo, hi, +1 lo→hi / -1 hi→lo) of every edge
-  triangles.reserve(mesh->faces.size());
-  ids.reserve(mesh->faces.size());
-  directed.reserve(mesh->faces.size() * 3);
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d hi = -lo;
-  for (const Eigen::Vector3i& f : mesh->faces) {
+  const int nv = static_cast<int>(input.vertices.size());
+  TriangleMesh usable;
+  usable.vertices = input.vertices;
+  usable.faces.reserve(input.faces.size());
+  for (const Eigen::Vector3i& f : input.faces) {
     if (f.minCoeff() < 0 || f.maxCoeff() >= nv)
       continue;
     const Eigen::Vector3i id(welded[f[0]], welded[f[1]], welded[f[2]]);
     if (id[0] == id[1] || id[1] == id[2] || id[0] == id[2])
       continue;
+    if (!input.vertices[f[0]].allFinite() || !input.vertices[f[1]].allFinite() ||
+        !input.vertices[f[2]].allFinite())
+      continue;
+    usable.faces.push_back(id);
+  }
+  std::vector<int> sign(usable.faces.size(), 1);
+  if (fix_orientation)
+    sign = computeOutwardFaceSigns(usable, usable.faceAdjacency());
+
+  std::vector<Eigen::Matrix3d> triangles;
+  std::vector<Eigen::Vector3i> ids;
+  std::vector<std::array<int, 3>> directed; // (lo, hi, +1 lo→hi / -1 hi→lo) of every edge
+  triangles.reserve(usable.faces.size());
+  ids.reserve(usable.faces.size());
+  directed.reserve(usable.faces.size() * 3);
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for (std::size_t i = 0; i < usable.faces.size(); ++i) {
+    Eigen::Vector3i id = usable.faces[i];
+    if (sign[i] < 0) {
+      std::swap(id[1], id[2]);
+      ++num_flipped_;
+    }
     Eigen::Matrix3d t;
     for (int k = 0; k < 3; ++k)
-      t.col(k) = mesh->vertices[f[k]];
-    if (!t.allFinite())
-      continue;
+      t.col(k) = usable.vertices[id[k]];
     for (int k = 0; k < 3; ++k) {
       const int a = id[k], b = id[(k + 1) % 3];
       directed.push_back({std::min(a, b), std::max(a, b), a < b ? 1 : -1});
@@ -92,7 +103,7 @@ WindingNumber::WindingNumber(const TriangleMesh& input, bool fix_orientation)
   if (n == 0)
     return;
   size_ = (hi - lo).norm();
-  detail::sortEdgeRecords(directed, nv);
+  detail::sortEdgeRecords(directed, static_cast<int>(usable.vertices.size()));
   closed_ = true;
   for (std::size_t i = 0; i < directed.size() && closed_;) {
     std::size_t j = i;

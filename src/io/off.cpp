@@ -2,6 +2,7 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  */
+#include "polygon_fan.h"
 #include "text_file.h"
 
 #include <segmat/io/off.h>
@@ -79,6 +80,7 @@ loadOff(const std::string& path)
     mesh.vertices.push_back(p); // further values (colours, normals) are ignored
   }
 
+  std::vector<int> corners;
   for (long f = 0; f < nf; ++f) {
     if (!file.nextLine(line))
       file.fail("file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
@@ -90,20 +92,15 @@ loadOff(const std::string& path)
     if (static_cast<std::size_t>(n) > tokens.remaining())
       file.fail(context + " announces " + std::to_string(n) + " vertices but lists only " +
                 std::to_string(tokens.remaining()) + " values");
-    int first = 0, previous = 0;
+    corners.clear();
     for (long k = 0; k < n; ++k) {
       const int index = file.parseInt(file.require(tokens, context, "index"), "vertex index");
       if (index < 0 || index >= nv)
         file.fail(context + " refers to vertex " + std::to_string(index) + " but there are " +
                   std::to_string(nv) + " vertices");
-      // Fan (v0, v_{k-1}, v_k), as the PSB reader triangulates: a triangle-only file keeps its
-      // face order, so .seg labels line up.
-      if (k == 0)
-        first = index;
-      else if (k >= 2)
-        mesh.faces.emplace_back(first, previous, index);
-      previous = index;
+      corners.push_back(index);
     }
+    detail::appendFan(mesh.faces, corners);
     // Anything after the indices (per-face colours) is ignored.
   }
 

@@ -6,24 +6,42 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <random>
+#include <vector>
 
 namespace segmat {
 namespace test {
 
-std::string
-scratchDir()
+namespace {
+// The per-process directory, removed with everything in it when the test program exits.
+struct ScratchDirectory
 {
-  static const std::string dir = [] {
+  std::string path;
+  ScratchDirectory()
+  {
     std::string base = ::testing::TempDir();
     if (base.empty() || base.back() != '/')
       base += '/';
-    const std::string d = base + "segmat_test_" + std::to_string(::getpid()) + "/";
-    ::mkdir(d.c_str(), 0700);
-    return d;
-  }();
-  return dir;
+    path = base + "segmat_test_" + std::to_string(::getpid()) + "/";
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchDirectory()
+  {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+} // namespace
+
+std::string
+scratchDir()
+{
+  static const ScratchDirectory dir;
+  return dir.path;
 }
 
 std::string
@@ -58,11 +76,11 @@ throwsFileError(const std::function<void()>& action, const std::string& path, lo
   } catch (const segmat::Error& e) {
     const std::string what = e.what();
     if (e.path() != path)
-      return ::testing::AssertionFailure() << "path is '" << e.path() << "', not '" << path
-                                           << "': " << what;
+      return ::testing::AssertionFailure()
+             << "path is '" << e.path() << "', not '" << path << "': " << what;
     if (e.line() != line)
-      return ::testing::AssertionFailure() << "line is " << e.line() << ", not " << line << ": "
-                                           << what;
+      return ::testing::AssertionFailure()
+             << "line is " << e.line() << ", not " << line << ": " << what;
     if (what.find(path) == std::string::npos)
       return ::testing::AssertionFailure() << "message lacks the path: " << what;
     if (line > 0 && what.find(":" + std::to_string(line) + ":") == std::string::npos)
@@ -74,6 +92,43 @@ throwsFileError(const std::function<void()>& action, const std::string& path, lo
     return ::testing::AssertionFailure() << "threw another exception: " << e.what();
   }
   return ::testing::AssertionFailure() << "did not throw";
+}
+
+::testing::AssertionResult
+loadingFails(const std::function<void(const std::string& path)>& load, const std::string& name,
+             const std::string& bytes, long line, const std::string& needle)
+{
+  const std::string path = writeScratchFile(name, bytes);
+  return throwsFileError([&] { load(path); }, path, line, needle);
+}
+
+::testing::AssertionResult
+damagedCopiesFailCleanly(const std::string& name, const std::string& bytes,
+                         const std::function<void(const std::string& path)>& load)
+{
+  std::vector<std::string> copies;
+  const std::size_t step = std::max<std::size_t>(1, bytes.size() / 200);
+  for (std::size_t n = 0; n < bytes.size(); n += step)
+    copies.push_back(bytes.substr(0, n));
+  std::mt19937 rng(12345);
+  const char replacements[] = {'\0', '\n', ' ', '-', '9', 'x', '#', '\xff'};
+  for (int i = 0; i < 200 && !bytes.empty(); ++i) {
+    std::string copy = bytes;
+    copy[rng() % copy.size()] = replacements[rng() % sizeof replacements];
+    copies.push_back(copy);
+  }
+  int errors = 0;
+  for (std::size_t i = 0; i < copies.size(); ++i) {
+    const std::string path = writeScratchFile(name, copies[i]);
+    try {
+      load(path);
+    } catch (const segmat::Error&) {
+      ++errors;
+    } catch (const std::exception& e) {
+      return ::testing::AssertionFailure() << "copy " << i << " threw " << e.what();
+    }
+  }
+  return ::testing::AssertionSuccess() << errors << " of " << copies.size() << " copies rejected";
 }
 
 } // namespace test

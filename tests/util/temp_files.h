@@ -10,7 +10,8 @@
 namespace segmat {
 namespace test {
 
-/** \brief Directory for this test process's scratch files (created on first use, ends in '/'). */
+/** \brief Directory for this test process's scratch files (created on first use, removed with its
+ * content when the process exits; ends in '/'). */
 std::string
 scratchDir();
 
@@ -31,6 +32,21 @@ fileExists(const std::string& path);
 ::testing::AssertionResult
 throwsFileError(const std::function<void()>& action, const std::string& path, long line,
                 const std::string& needle = "");
+
+/** \brief Writes \a bytes to scratch file \a name and checks that \a load(path) throws
+ * segmat::Error at \a line with \a needle in its message (see throwsFileError). */
+::testing::AssertionResult
+loadingFails(const std::function<void(const std::string& path)>& load, const std::string& name,
+             const std::string& bytes, long line, const std::string& needle);
+
+/** \brief Loads damaged copies of \a bytes with \a load: every truncation (at most ~200, evenly
+ * spaced) and 200 copies with one byte replaced (seeded, so the same every run). Each load must
+ * either succeed or throw segmat::Error; returns a failure naming the first copy that threw
+ * something else. (A crash or hang fails the test by itself.)
+ */
+::testing::AssertionResult
+damagedCopiesFailCleanly(const std::string& name, const std::string& bytes,
+                         const std::function<void(const std::string& path)>& load);
 
 } // namespace test
 } // namespace segmat

@@ -30,9 +30,11 @@ namespace segmat {
  * patch and cuts the error at β = 2 about twentyfold); otherwise its children are visited, and
  * faces in leaves get the exact solid angle (Van Oosterom & Strackee 1983).
  *
- * Winding numbers need consistently oriented faces. By default the constructor therefore copies
- * the mesh and runs orientFacesOutward() on the copy (see its limits); the caller's mesh is not
- * changed. Degenerate faces and faces with an out-of-range or non-finite corner are ignored.
+ * Winding numbers need consistently oriented faces. By default the constructor therefore orients
+ * a copy of the faces with computeOutwardFaceSigns() (face_orientation.h; see its limits), after
+ * welding vertices at equal positions so that unwelded meshes connect; the caller's mesh is not
+ * changed. Faces with a repeated (welded) corner, an out-of-range index or a non-finite corner are
+ * ignored.
  */
 class WindingNumber
 {
@@ -42,7 +44,8 @@ public:
 
   /** \brief Builds the hierarchy, O(F log F).
    * \param[in] mesh the surface
-   * \param[in] fix_orientation first orient faces consistently and outward (orientFacesOutward)
+   * \param[in] fix_orientation first orient faces consistently and outward
+   *            (computeOutwardFaceSigns)
    */
   explicit WindingNumber(const TriangleMesh& mesh, bool fix_orientation = true);
 
@@ -113,7 +116,7 @@ public:
   bool
   windingNumberChange(const Eigen::Vector3d& from, const Eigen::Vector3d& to, int& change) const;
 
-  /** \brief Number of faces that orientFacesOutward flipped in the constructor. */
+  /** \brief Number of faces the orientation repair flipped in the constructor. */
   std::size_t
   numFlippedFaces() const
   {
