@@ -543,17 +543,7 @@ TEST(VoronoiMat, UsersMeshesUnweldedMixedAndOverlapping)
   TriangleMesh sphere = test::icosphere(3);
   for (std::size_t v = 0; v < sphere.vertices.size(); ++v)
     sphere.vertices[v] *= 1.0 + 0.05 * std::sin(12.9898 * static_cast<double>(v));
-  TriangleMesh soup;
-  for (std::size_t f = 0; f < sphere.faces.size(); ++f) {
-    Eigen::Vector3i g;
-    for (int k = 0; k < 3; ++k) {
-      g[k] = static_cast<int>(soup.vertices.size());
-      soup.vertices.push_back(sphere.vertices[sphere.faces[f][k]]);
-    }
-    if (f % 2)
-      std::swap(g[1], g[2]);
-    soup.faces.push_back(g);
-  }
+  const TriangleMesh soup = test::triangleSoup(sphere, 2);
   const MedialMesh clean = computeMat(sphere, 0.015, 0.0), messy = computeMat(soup, 0.015, 0.0);
   ASSERT_GT(clean.numVertices(), 0u);
   EXPECT_EQ(messy.numVertices(), clean.numVertices());

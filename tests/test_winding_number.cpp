@@ -163,17 +163,7 @@ TEST(WindingNumber, SoupAndSeveralComponents)
   // An unwelded soup (every face has its own corners), mixed orientation: welding exactly equal
   // positions reconnects it, so the orientation repair and the closedness test see one sphere.
   const TriangleMesh sphere = icosphere(2);
-  TriangleMesh soup;
-  for (std::size_t f = 0; f < sphere.faces.size(); ++f) {
-    Eigen::Vector3i g;
-    for (int k = 0; k < 3; ++k) {
-      g[k] = static_cast<int>(soup.vertices.size());
-      soup.vertices.push_back(sphere.vertices[sphere.faces[f][k]]);
-    }
-    if (f % 2)
-      std::swap(g[1], g[2]);
-    soup.faces.push_back(g);
-  }
+  const TriangleMesh soup = test::triangleSoup(sphere, 2);
   const WindingNumber soup_w(soup);
   EXPECT_EQ(soup_w.numFlippedFaces(), sphere.faces.size() / 2);
   EXPECT_TRUE(soup_w.isClosed());

@@ -218,6 +218,23 @@ signedVolume(const TriangleMesh& mesh)
 }
 
 TriangleMesh
+triangleSoup(const TriangleMesh& mesh, int flip_every)
+{
+  TriangleMesh soup;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    Eigen::Vector3i g;
+    for (int k = 0; k < 3; ++k) {
+      g[k] = static_cast<int>(soup.vertices.size());
+      soup.vertices.push_back(mesh.vertices[mesh.faces[f][k]]);
+    }
+    if (flip_every > 0 && static_cast<int>(f % flip_every) == 1 % flip_every)
+      std::swap(g[1], g[2]);
+    soup.faces.push_back(g);
+  }
+  return soup;
+}
+
+TriangleMesh
 merge(const std::vector<TriangleMesh>& parts)
 {
   TriangleMesh out;

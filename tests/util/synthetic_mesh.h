@@ -60,6 +60,13 @@ torus(double major, double minor, int major_segments = 64, int minor_segments = 
 double
 signedVolume(const TriangleMesh& mesh);
 
+/** \brief An unwelded copy ("triangle soup", as from STL files): every face gets its own three
+ * vertices. With flip_every = k > 0 the faces f with f % k == 1 % k are flipped (k = 1: all of
+ * them; k = 2: the odd ones); 0 flips none.
+ */
+TriangleMesh
+triangleSoup(const TriangleMesh& mesh, int flip_every = 0);
+
 /** \brief Concatenates meshes (vertex indices of later meshes are shifted). */
 TriangleMesh
 merge(const std::vector<TriangleMesh>& parts);
