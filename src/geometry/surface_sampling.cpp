@@ -33,16 +33,6 @@ validFace(const TriangleMesh& mesh, const Eigen::Vector3i& f)
 }
 } // namespace
 
-double
-surfaceArea(const TriangleMesh& mesh)
-{
-  double area = 0.0;
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-    if (validFace(mesh, mesh.faces[f]))
-      area += mesh.faceArea(static_cast<int>(f));
-  return area;
-}
-
 std::vector<Eigen::Vector3d>
 sampleSurface(const TriangleMesh& mesh, double max_spacing)
 {

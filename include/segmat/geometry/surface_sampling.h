@@ -53,8 +53,4 @@ thinPoints(const std::vector<Eigen::Vector3d>& points, double radius);
 std::vector<int>
 thinPointsToCount(const std::vector<Eigen::Vector3d>& points, std::size_t max_count);
 
-/** \brief Total area of the mesh's faces. */
-double
-surfaceArea(const TriangleMesh& mesh);
-
 } // namespace segmat
