@@ -4,6 +4,7 @@
  */
 #include <segmat/common/error.h>
 #include <segmat/geometry/medial_mesh.h>
+#include "point_bounds.h"
 
 #include <algorithm>
 #include <array>
@@ -128,14 +129,7 @@ MedialMesh::findEdge(int a, int b) const
 double
 MedialMesh::centerBoundingBoxDiagonal() const
 {
-  if (centers_.empty())
-    return 0.0;
-  Eigen::Vector3d lo = centers_.front(), hi = centers_.front();
-  for (const Eigen::Vector3d& c : centers_) {
-    lo = lo.cwiseMin(c);
-    hi = hi.cwiseMax(c);
-  }
-  return (hi - lo).norm();
+  return detail::boundsDiagonal(centers_);
 }
 
 double

@@ -25,6 +25,14 @@ finiteBounds(const std::vector<Eigen::Vector3d>& points)
   return box;
 }
 
+/** Diagonal of the box of the finite points (0 when there are none). */
+inline double
+boundsDiagonal(const std::vector<Eigen::Vector3d>& points)
+{
+  const Eigen::AlignedBox3d box = finiteBounds(points);
+  return box.isEmpty() ? 0.0 : box.diagonal().norm();
+}
+
 /** Lowest corner of the finite points (origin when there are none): the origin of hash cells,
  * so that meshes far from (0, 0, 0) do not overflow cell indices. */
 inline Eigen::Vector3d

@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <segmat/geometry/triangle_mesh.h>
+#include "point_bounds.h"
 
 #include <Eigen/Geometry>
 
@@ -49,14 +50,7 @@ TriangleMesh::faceNormals() const
 double
 TriangleMesh::boundingBoxDiagonal() const
 {
-  if (vertices.empty())
-    return 0.0;
-  Eigen::Vector3d lo = vertices.front(), hi = vertices.front();
-  for (const Eigen::Vector3d& v : vertices) {
-    lo = lo.cwiseMin(v);
-    hi = hi.cwiseMax(v);
-  }
-  return (hi - lo).norm();
+  return detail::boundsDiagonal(vertices);
 }
 
 std::vector<FaceAdjacency>

@@ -4,6 +4,7 @@
  */
 #include <segmat/geometry/medial_mesh.h>
 #include <segmat/segmentation/mat_graph.h>
+#include "../geometry/point_bounds.h"
 
 #include <Eigen/Geometry>
 
@@ -94,14 +95,7 @@ MatGraph::hasPrimitives() const
 double
 MatGraph::centerBoundingBoxDiagonal() const
 {
-  if (centers_.empty())
-    return 0.0;
-  Eigen::Vector3d lo = centers_.front(), hi = centers_.front();
-  for (const Eigen::Vector3d& p : centers_) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return (hi - lo).norm();
+  return detail::boundsDiagonal(centers_);
 }
 
 } // namespace segmat
