@@ -1,0 +1,793 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <segmat/geometry/medial_tangent_planes.h>
+#include <segmat/medial/qmat_simplification.h>
+#include <segmat/medial/sphere_quadric.h>
+
+#include <Eigen/Geometry>
+#include <pcl/console/print.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <queue>
+#include <vector>
+
+namespace segmat {
+namespace {
+
+constexpr double kHalfPi = 1.57079632679489661923;
+/// Neighbourhood searched for a disk bounding a cycle a collapse would kill: at every pop, and
+/// once the queue has run dry.
+constexpr int kPopPatchRings = 2;
+constexpr int kStuckPatchRings = 4;
+
+/** One priority-queue entry; stale ones are recognised by their version (lazy deletion). */
+struct QueueEntry
+{
+  double cost;
+  int lo, hi; ///< the edge's endpoints when pushed: deterministic tie-break
+  int edge;
+  std::uint32_t version;
+  std::uint8_t tier; ///< 0: normal; 1: every candidate flips a triangle (deferred)
+};
+
+/** Priority-queue order: "a comes after b". */
+struct ComesAfter
+{
+  bool
+  operator()(const QueueEntry& a, const QueueEntry& b) const
+  {
+    if (a.tier != b.tier)
+      return a.tier > b.tier;
+    if (a.cost != b.cost)
+      return a.cost > b.cost;
+    if (a.lo != b.lo)
+      return a.lo > b.lo;
+    return a.hi > b.hi;
+  }
+};
+
+/** The sphere an edge would collapse to and the cost of doing so. */
+struct CollapseChoice
+{
+  Eigen::Vector4d sphere;
+  double cost = 0.0;
+  std::uint8_t tier = 0;
+};
+
+struct Settings
+{
+  double k;
+  double boundary_weight;
+  bool prevent_inversion;
+  bool preserve_cavities;
+};
+
+/** The dynamic simplicial 2-complex being simplified. Vertex ids: kept input spheres first (in
+ * input order), merged spheres appended in merge order — exactly the output order. */
+class EdgeCollapser
+{
+public:
+  EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origin, double scale,
+                const Settings& settings);
+
+  std::size_t aliveCount() const { return alive_count_; }
+  std::size_t collapses() const { return collapses_; }
+  std::size_t penalisedCollapses() const { return penalised_; }
+
+  /** Collapse until \a target spheres remain or nothing can collapse; returns the count. */
+  std::size_t run(std::size_t target);
+
+  /** The current complex in input units, compacted. */
+  MedialMesh extract() const;
+
+private:
+  bool hasVertex(int f, int v) const
+  {
+    const auto& t = f_v_[f];
+    return t[0] == v || t[1] == v || t[2] == v;
+  }
+  int other(int e, int v) const { return e_v_[e][0] == v ? e_v_[e][1] : e_v_[e][0]; }
+
+  void buildQuadrics(const MedialMesh& mat);
+  CollapseChoice evaluate(int e) const;
+  bool flips(int a, int b, const Eigen::Vector3d& x) const;
+  bool linkCondition(int e);
+  bool unblockByHomology();
+  bool killedCyclesAreBoundaries(int e, int rings);
+  bool faceExists(int a, int x, int y) const;
+  void collapse(int e, const Eigen::Vector4d& target);
+  void push(int e);
+  static void removeFrom(std::vector<int>& list, int value);
+
+  Settings settings_;
+  Eigen::Vector3d origin_;
+  double scale_;
+
+  // vertices
+  std::vector<Eigen::Vector4d> sphere_;
+  std::vector<SphereQuadric> face_q_;   ///< slab tangent planes (§8.3)
+  std::vector<SphereQuadric> border_q_; ///< sheet borders, pure edges, branch tips (§8.3)
+  std::vector<char> v_alive_;
+  std::vector<std::vector<int>> v_edges_, v_faces_;
+  std::vector<std::uint32_t> mark_;
+  std::uint32_t stamp_ = 0;
+  // edges
+  std::vector<std::array<int, 2>> e_v_;
+  std::vector<char> e_alive_, e_blocked_;
+  std::vector<std::uint32_t> e_version_;
+  // faces
+  std::vector<std::array<int, 3>> f_v_;
+  std::vector<char> f_alive_;
+
+  std::priority_queue<QueueEntry, std::vector<QueueEntry>, ComesAfter> queue_;
+  std::size_t alive_count_ = 0;
+  std::size_t collapses_ = 0;
+  std::size_t penalised_ = 0;
+  std::vector<int> scratch_;
+};
+
+EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origin, double scale,
+                             const Settings& settings)
+: settings_(settings), origin_(origin), scale_(scale)
+{
+  const int n_in = static_cast<int>(mat.numVertices());
+  // Isolated spheres cannot collapse; Q-MAT drops them (CleanIsolatedVertices).
+  std::vector<int> to_internal(n_in, -1);
+  int n = 0;
+  for (int v = 0; v < n_in; ++v)
+    if (!mat.vertexEdges(v).empty())
+      to_internal[v] = n++;
+  alive_count_ = static_cast<std::size_t>(n);
+  const std::size_t capacity = n > 0 ? 2 * static_cast<std::size_t>(n) - 1 : 0;
+  sphere_.reserve(capacity);
+  face_q_.reserve(capacity);
+  border_q_.reserve(capacity);
+  v_alive_.reserve(capacity);
+  v_edges_.reserve(capacity);
+  v_faces_.reserve(capacity);
+  mark_.assign(capacity, 0);
+  for (int v = 0; v < n_in; ++v) {
+    if (to_internal[v] < 0)
+      continue;
+    Eigen::Vector4d s;
+    s.head<3>() = (mat.centers()[v] - origin_) / scale_;
+    s[3] = mat.radii()[v] / scale_;
+    sphere_.push_back(s);
+    v_alive_.push_back(1);
+  }
+  face_q_.resize(n);
+  border_q_.resize(n);
+  v_edges_.resize(n);
+  v_faces_.resize(n);
+
+  e_v_.reserve(mat.numEdges());
+  for (const Eigen::Vector2i& e : mat.edges()) {
+    const int id = static_cast<int>(e_v_.size());
+    const int a = to_internal[e[0]], b = to_internal[e[1]];
+    e_v_.push_back({a, b});
+    v_edges_[a].push_back(id);
+    v_edges_[b].push_back(id);
+  }
+  e_alive_.assign(e_v_.size(), 1);
+  e_blocked_.assign(e_v_.size(), 0);
+  e_version_.assign(e_v_.size(), 0);
+
+  f_v_.reserve(mat.numTriangles());
+  for (const Eigen::Vector3i& t : mat.triangles()) {
+    const int id = static_cast<int>(f_v_.size());
+    f_v_.push_back({to_internal[t[0]], to_internal[t[1]], to_internal[t[2]]});
+    for (int k = 0; k < 3; ++k)
+      v_faces_[to_internal[t[k]]].push_back(id);
+  }
+  f_alive_.assign(f_v_.size(), 1);
+
+  buildQuadrics(mat);
+
+  // Every edge's first cost; independent per edge, so threads cannot change the result.
+  const int num_edges = static_cast<int>(e_v_.size());
+  std::vector<CollapseChoice> first(num_edges);
+#pragma omp parallel for schedule(static)
+  for (int e = 0; e < num_edges; ++e)
+    first[e] = evaluate(e);
+  std::vector<QueueEntry> entries;
+  entries.reserve(num_edges);
+  for (int e = 0; e < num_edges; ++e)
+    entries.push_back({first[e].cost, std::min(e_v_[e][0], e_v_[e][1]),
+                       std::max(e_v_[e][0], e_v_[e][1]), e, 0, first[e].tier});
+  queue_ = decltype(queue_)(ComesAfter(), std::move(entries));
+}
+
+void
+EdgeCollapser::buildQuadrics(const MedialMesh& mat)
+{
+  // Slab sides: both tangent planes of every triangle, weight 1, on all three corners.
+  for (const auto& t : f_v_) {
+    Eigen::Vector3d n_plus, n_minus;
+    if (!slabTangentPlanes(sphere_[t[0]], sphere_[t[1]], sphere_[t[2]], n_plus, n_minus))
+      continue;
+    // Both planes touch all three spheres, so any corner defines them.
+    const SphereQuadric q = SphereQuadric::fromPlane(n_plus, sphere_[t[0]]) +
+                            SphereQuadric::fromPlane(n_minus, sphere_[t[0]]);
+    for (int k = 0; k < 3; ++k)
+      face_q_[t[k]] += q;
+  }
+
+  // Q-MAT "PreservBoundaryMethodFour" (§8.3): weight bound_weight · 0.1 · ratio².
+  for (std::size_t me = 0; me < mat.numEdges(); ++me) {
+    const int e = static_cast<int>(me);
+    const int tri_count = mat.edgeTriangleCount(e);
+    if (tri_count > 1)
+      continue;
+    const int a = e_v_[e][0], b = e_v_[e][1];
+    const Eigen::Vector4d& sa = sphere_[a];
+    const Eigen::Vector4d& sb = sphere_[b];
+    const double ratio = stabilityRatio(sa, sb);
+    const double w = settings_.boundary_weight * 0.1 * ratio * ratio;
+    const Eigen::Vector3d ab = sa.head<3>() - sb.head<3>();
+    if (tri_count == 1) {
+      // Sheet border: the plane through the edge perpendicular to the sheet, pointing away from
+      // the triangle's third corner. Its normal is deliberately not unit (length = edge length),
+      // as in the published code.
+      int third = -1;
+      Eigen::Vector3d face_normal = Eigen::Vector3d::Zero();
+      for (int f : v_faces_[a]) {
+        if (!hasVertex(f, b))
+          continue;
+        const auto& t = f_v_[f];
+        third = t[0] != a && t[0] != b ? t[0] : (t[1] != a && t[1] != b ? t[1] : t[2]);
+        face_normal = (sphere_[t[1]].head<3>() - sphere_[t[0]].head<3>())
+                          .cross(sphere_[t[2]].head<3>() - sphere_[t[0]].head<3>());
+        break;
+      }
+      const double len = face_normal.norm();
+      if (third < 0 || !(len > 0.0))
+        continue;
+      Eigen::Vector3d t = (face_normal / len).cross(ab);
+      if (t.dot(sphere_[third].head<3>() - sa.head<3>()) > 0.0)
+        t = -t;
+      border_q_[a] += SphereQuadric::fromPlane(t, sa, w);
+      border_q_[b] += SphereQuadric::fromPlane(t, sb, w);
+      continue;
+    }
+    // Pure edge (a medial cone). The published code took the tangent planes of the spheres a, b
+    // and (c_a + c_b, (r_a + r_b)/2) — a sum where the midpoint was meant, so the planes depended
+    // on the origin. With the midpoint the three spheres are collinear and every plane tangent
+    // to the cone qualifies; four planes 90° apart, weight ½ each (the published code used two,
+    // weight 1), give the rotation-symmetric quadric whatever the first plane's angle. Each comes
+    // with its companion plane of normal (c_a − c_b) × n, as in the published code.
+    for (int i = 0; i < 4; ++i) {
+      Eigen::Vector3d n;
+      if (!coneTangentPlane(sa, sb, i * kHalfPi, n))
+        break;
+      const Eigen::Vector3d companion = ab.cross(n);
+      for (int v : {a, b}) {
+        border_q_[v] += SphereQuadric::fromPlane(n, sphere_[v], 0.5);
+        border_q_[v] += SphereQuadric::fromPlane(companion, sphere_[v], 0.5);
+      }
+    }
+    // Branch tips (a sphere with this one edge) are held by a plane across the axis.
+    const int ia = mat.edges()[e][0], ib = mat.edges()[e][1];
+    if (mat.vertexEdges(ia).size() == 1)
+      border_q_[a] += SphereQuadric::fromPlane(ab, sa, w);
+    if (mat.vertexEdges(ib).size() == 1)
+      border_q_[b] += SphereQuadric::fromPlane(-ab, sb, w);
+  }
+}
+
+bool
+EdgeCollapser::flips(int a, int b, const Eigen::Vector3d& x) const
+{
+  for (int v : {a, b}) {
+    const int w = v == a ? b : a;
+    for (int f : v_faces_[v]) {
+      if (hasVertex(f, w))
+        continue; // disappears with the collapse
+      const auto& t = f_v_[f];
+      Eigen::Vector3d p[3] = {sphere_[t[0]].head<3>(), sphere_[t[1]].head<3>(),
+                              sphere_[t[2]].head<3>()};
+      const Eigen::Vector3d e1 = p[1] - p[0], e2 = p[2] - p[0];
+      const Eigen::Vector3d before = e1.cross(e2);
+      // A (nearly) degenerate triangle has no orientation to lose.
+      if (!(before.squaredNorm() > 1e-14 * e1.squaredNorm() * e2.squaredNorm()))
+        continue;
+      p[t[0] == v ? 0 : (t[1] == v ? 1 : 2)] = x;
+      const Eigen::Vector3d after = (p[1] - p[0]).cross(p[2] - p[0]);
+      if (before.dot(after) < 0.0)
+        return true;
+    }
+  }
+  return false;
+}
+
+CollapseChoice
+EdgeCollapser::evaluate(int e) const
+{
+  const int a = e_v_[e][0], b = e_v_[e][1];
+  const Eigen::Vector4d& sa = sphere_[a];
+  const Eigen::Vector4d& sb = sphere_[b];
+  const SphereQuadric face_q = face_q_[a] + face_q_[b];
+  const SphereQuadric q = face_q + border_q_[a] + border_q_[b];
+  bool has_faces = false;
+  for (int f : v_faces_[a])
+    if (hasVertex(f, b)) {
+      has_faces = true;
+      break;
+    }
+  const Eigen::Vector4d mid = 0.5 * (sa + sb);
+  const Eigen::Vector4d* fallback[3] = {&sa, &sb, &mid};
+  double fallback_cost[3] = {q(sa), q(sb), q(mid)};
+
+  CollapseChoice choice;
+  if (!has_faces || face_q.invertible()) {
+    // §8.4 case 1: the optimal sphere m* = A⁻¹b; the midpoint when singular or r < 0.
+    if (!q.minimiser(choice.sphere) || !(choice.sphere[3] >= 0.0))
+      choice.sphere = mid;
+    choice.cost = q(choice.sphere);
+  }
+  else {
+    // §8.4 case 2 (flat or degenerate slabs): the cheapest of the endpoints and the midpoint,
+    // scored with the border terms (the published code dropped them here).
+    int best = 0;
+    for (int i = 1; i < 3; ++i)
+      if (fallback_cost[i] < fallback_cost[best])
+        best = i;
+    choice.sphere = *fallback[best];
+    choice.cost = fallback_cost[best];
+  }
+
+  if (settings_.prevent_inversion && flips(a, b, choice.sphere.head<3>())) {
+    // The intended rule (the published code inverted it, §8.4): the cheapest candidate that
+    // flips nothing, else keep m* but defer the collapse to the penalty tier.
+    int order[3] = {0, 1, 2};
+    std::stable_sort(order, order + 3,
+                     [&](int i, int j) { return fallback_cost[i] < fallback_cost[j]; });
+    bool found = false;
+    for (int i : order)
+      if (!flips(a, b, fallback[i]->head<3>())) {
+        choice.sphere = *fallback[i];
+        choice.cost = fallback_cost[i];
+        found = true;
+        break;
+      }
+    if (!found)
+      choice.tier = 1;
+  }
+  const double ratio = stabilityRatio(sa, sb);
+  choice.cost = (std::max(0.0, choice.cost) + settings_.k) * ratio * ratio;
+  return choice;
+}
+
+bool
+EdgeCollapser::faceExists(int a, int x, int y) const
+{
+  for (int f : v_faces_[a])
+    if (hasVertex(f, x) && hasVertex(f, y))
+      return true;
+  return false;
+}
+
+bool
+EdgeCollapser::linkCondition(int e)
+{
+  const int a = e_v_[e][0], b = e_v_[e][1];
+  ++stamp_;
+  for (int ea : v_edges_[a])
+    mark_[other(ea, a)] = stamp_;
+  scratch_.clear(); // common neighbours: the vertex part of Lk(a) ∩ Lk(b)
+  for (int eb : v_edges_[b]) {
+    const int x = other(eb, b);
+    if (x != a && mark_[x] == stamp_)
+      scratch_.push_back(x);
+  }
+  // Lk(ab) = third corners of the triangles on ab. Each is a common neighbour (triangle sides
+  // are edges), so equality of the vertex parts is a count comparison.
+  std::size_t on_ab = 0;
+  for (int f : v_faces_[a])
+    if (hasVertex(f, b))
+      ++on_ab;
+  if (on_ab != scratch_.size())
+    return false;
+  // Edge part: Lk(ab) has no edges in a 2-complex, so an edge xy carrying both axy and bxy
+  // violates the condition: the collapse would flatten the hollow tetrahedron abxy, closing one
+  // cavity (b2 − 1) and changing nothing else. Such x, y are common neighbours.
+  if (!settings_.preserve_cavities)
+    return true;
+  for (std::size_t i = 0; i < scratch_.size(); ++i)
+    for (std::size_t j = i + 1; j < scratch_.size(); ++j)
+      if (faceExists(a, scratch_[i], scratch_[j]) && faceExists(b, scratch_[i], scratch_[j]))
+        return false;
+  return true;
+}
+
+void
+EdgeCollapser::removeFrom(std::vector<int>& list, int value)
+{
+  auto it = std::find(list.begin(), list.end(), value);
+  if (it != list.end()) {
+    *it = list.back();
+    list.pop_back();
+  }
+}
+
+void
+EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
+{
+  const int a = e_v_[e][0], b = e_v_[e][1];
+  const int m = static_cast<int>(sphere_.size());
+  sphere_.push_back(target);
+  face_q_.push_back(face_q_[a] + face_q_[b]);
+  border_q_.push_back(border_q_[a] + border_q_[b]);
+  v_alive_.push_back(1);
+  v_edges_.emplace_back();
+  v_faces_.emplace_back();
+  std::vector<int>& m_faces = v_faces_[m];
+  std::vector<int>& m_edges = v_edges_[m];
+
+  // Triangles: those on ab vanish, the others are re-pointed to m. Two of them become one only
+  // when axy and bxy both exist (a cavity closing, see linkCondition); both x and y are then
+  // neighbours of a, marked here.
+  ++stamp_;
+  for (int ea : v_edges_[a])
+    mark_[other(ea, a)] = stamp_;
+  const std::size_t faces_from_a = [&] {
+    std::size_t count = 0;
+    for (int f : v_faces_[a])
+      count += f_alive_[f] && !hasVertex(f, b);
+    return count;
+  }();
+  for (int v : {a, b})
+    for (int f : v_faces_[v]) {
+      if (!f_alive_[f])
+        continue;
+      auto& t = f_v_[f];
+      if (hasVertex(f, a) && hasVertex(f, b)) {
+        f_alive_[f] = 0;
+        const int third = t[0] != a && t[0] != b ? t[0] : (t[1] != a && t[1] != b ? t[1] : t[2]);
+        removeFrom(v_faces_[third], f);
+        continue;
+      }
+      const int k_v = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+      const int x = t[(k_v + 1) % 3], y = t[(k_v + 2) % 3];
+      if (v == b && mark_[x] == stamp_ && mark_[y] == stamp_) {
+        bool duplicate = false;
+        for (std::size_t i = 0; i < faces_from_a && !duplicate; ++i)
+          duplicate = hasVertex(m_faces[i], x) && hasVertex(m_faces[i], y);
+        if (duplicate) {
+          f_alive_[f] = 0;
+          removeFrom(v_faces_[x], f);
+          removeFrom(v_faces_[y], f);
+          continue;
+        }
+      }
+      t[k_v] = m;
+      m_faces.push_back(f);
+    }
+
+  // Edges: ab vanishes; ax and bx for a common neighbour x become one edge mx.
+  ++stamp_;
+  e_alive_[e] = 0;
+  for (int v : {a, b})
+    for (int e2 : v_edges_[v]) {
+      if (!e_alive_[e2])
+        continue;
+      const int x = other(e2, v);
+      if (mark_[x] == stamp_) {
+        e_alive_[e2] = 0;
+        removeFrom(v_edges_[x], e2);
+        continue;
+      }
+      mark_[x] = stamp_;
+      e_v_[e2] = {x, m};
+      e_blocked_[e2] = 0;
+      m_edges.push_back(e2);
+    }
+
+  v_alive_[a] = v_alive_[b] = 0;
+  std::vector<int>().swap(v_edges_[a]);
+  std::vector<int>().swap(v_edges_[b]);
+  std::vector<int>().swap(v_faces_[a]);
+  std::vector<int>().swap(v_faces_[b]);
+  --alive_count_;
+  ++collapses_;
+
+  for (int e2 : v_edges_[m])
+    push(e2);
+  // Edges around m whose link may have changed get another chance.
+  for (int e2 : v_edges_[m]) {
+    const int x = other(e2, m);
+    for (int e3 : v_edges_[x])
+      if (e_blocked_[e3]) {
+        e_blocked_[e3] = 0;
+        push(e3);
+      }
+  }
+}
+
+void
+EdgeCollapser::push(int e)
+{
+  const CollapseChoice c = evaluate(e);
+  const int a = e_v_[e][0], b = e_v_[e][1];
+  queue_.push({c.cost, std::min(a, b), std::max(a, b), e, ++e_version_[e], c.tier});
+}
+
+std::size_t
+EdgeCollapser::run(std::size_t target)
+{
+  while (alive_count_ > target) {
+    if (queue_.empty()) {
+      if (unblockByHomology())
+        continue;
+      break;
+    }
+    const QueueEntry top = queue_.top();
+    queue_.pop();
+    const int e = top.edge;
+    if (!e_alive_[e] || e_version_[e] != top.version)
+      continue;
+    if (!linkCondition(e) && !killedCyclesAreBoundaries(e, kPopPatchRings)) {
+      e_blocked_[e] = 1; // retried when its neighbourhood changes
+      continue;
+    }
+    // Costs of edges near a collapse can go stale (flips, triangle counts): re-validate.
+    const CollapseChoice c = evaluate(e);
+    if (c.tier != top.tier || c.cost != top.cost) {
+      queue_.push({c.cost, top.lo, top.hi, e, ++e_version_[e], c.tier});
+      continue;
+    }
+    penalised_ += c.tier;
+    collapse(e, c.sphere);
+  }
+  return alive_count_;
+}
+
+bool
+EdgeCollapser::unblockByHomology()
+{
+  if (settings_.preserve_cavities)
+    return false;
+  // Every live edge is blocked here (the queue is empty). Try them cheapest first.
+  std::vector<std::pair<QueueEntry, CollapseChoice>> blocked;
+  for (std::size_t e = 0; e < e_v_.size(); ++e) {
+    if (!e_alive_[e])
+      continue;
+    const CollapseChoice c = evaluate(static_cast<int>(e));
+    const int a = e_v_[e][0], b = e_v_[e][1];
+    blocked.push_back(
+        {{c.cost, std::min(a, b), std::max(a, b), static_cast<int>(e), 0, c.tier}, c});
+  }
+  std::sort(blocked.begin(), blocked.end(),
+            [](const auto& x, const auto& y) { return ComesAfter()(y.first, x.first); });
+  for (const auto& [entry, choice] : blocked)
+    if (killedCyclesAreBoundaries(entry.edge, kStuckPatchRings)) {
+      penalised_ += choice.tier;
+      collapse(entry.edge, choice.sphere);
+      return true;
+    }
+  return false;
+}
+
+bool
+EdgeCollapser::killedCyclesAreBoundaries(int e, int rings)
+{
+  // Killing a cycle that bounds creates a cavity: not allowed when cavities are kept.
+  if (settings_.preserve_cavities)
+    return false;
+  const int a = e_v_[e][0], b = e_v_[e][1];
+  // The common neighbours x without a triangle abx: the collapse kills the cycles ab+bx+xa.
+  std::vector<int> bad;
+  ++stamp_;
+  for (int ea : v_edges_[a])
+    mark_[other(ea, a)] = stamp_;
+  for (int eb : v_edges_[b]) {
+    const int x = other(eb, b);
+    if (x != a && mark_[x] == stamp_ && !faceExists(a, b, x))
+      bad.push_back(x);
+  }
+  if (bad.empty())
+    return true;
+
+  // Local patch: vertices within \a rings edges of a or b, and the triangles among them.
+  constexpr std::size_t kMaxPatchFaces = 4096;
+  ++stamp_;
+  std::vector<int> patch = {a, b};
+  mark_[a] = mark_[b] = stamp_;
+  for (int ring = 0, begin = 0; ring < rings; ++ring) {
+    const int end = static_cast<int>(patch.size());
+    for (int i = begin; i < end; ++i)
+      for (int e2 : v_edges_[patch[i]]) {
+        const int x = other(e2, patch[i]);
+        if (mark_[x] != stamp_) {
+          mark_[x] = stamp_;
+          patch.push_back(x);
+        }
+      }
+    begin = end;
+  }
+  // Local edge numbering; the faces as GF(2) vectors over it.
+  std::vector<int> faces;
+  for (int v : patch)
+    for (int f : v_faces_[v]) {
+      const auto& t = f_v_[f];
+      if (mark_[t[0]] == stamp_ && mark_[t[1]] == stamp_ && mark_[t[2]] == stamp_ &&
+          std::min({t[0], t[1], t[2]}) == v) // each face once, from its smallest corner
+        faces.push_back(f);
+    }
+  if (faces.size() > kMaxPatchFaces)
+    return false; // too big to decide cheaply: stay on the safe side
+  std::vector<std::uint64_t> edge_key;
+  auto key = [](int p, int q) {
+    return (static_cast<std::uint64_t>(std::min(p, q)) << 32) |
+           static_cast<std::uint32_t>(std::max(p, q));
+  };
+  for (int f : faces)
+    for (int k = 0; k < 3; ++k)
+      edge_key.push_back(key(f_v_[f][k], f_v_[f][(k + 1) % 3]));
+  for (int x : bad) {
+    edge_key.push_back(key(a, x));
+    edge_key.push_back(key(b, x));
+  }
+  edge_key.push_back(key(a, b));
+  std::sort(edge_key.begin(), edge_key.end());
+  edge_key.erase(std::unique(edge_key.begin(), edge_key.end()), edge_key.end());
+  const std::size_t words = (edge_key.size() + 63) / 64;
+  auto bitOf = [&](int p, int q) {
+    return static_cast<std::size_t>(
+        std::lower_bound(edge_key.begin(), edge_key.end(), key(p, q)) - edge_key.begin());
+  };
+  using Bits = std::vector<std::uint64_t>;
+  auto flip = [](Bits& v, std::size_t bit) { v[bit / 64] ^= std::uint64_t(1) << (bit % 64); };
+  auto highest = [](const Bits& v) -> long {
+    for (std::size_t w = v.size(); w-- > 0;)
+      if (v[w])
+        return static_cast<long>(w * 64 + 63 - __builtin_clzll(v[w]));
+    return -1;
+  };
+  // Echelon basis of the boundaries of the patch faces, keyed by leading bit.
+  std::vector<Bits> basis;
+  std::vector<long> lead_of(edge_key.size(), -1);
+  for (int f : faces) {
+    Bits v(words, 0);
+    for (int k = 0; k < 3; ++k)
+      flip(v, bitOf(f_v_[f][k], f_v_[f][(k + 1) % 3]));
+    for (long h = highest(v); h >= 0 && lead_of[h] >= 0; h = highest(v))
+      for (std::size_t w = 0; w < words; ++w)
+        v[w] ^= basis[lead_of[h]][w];
+    const long h = highest(v);
+    if (h >= 0) {
+      lead_of[h] = static_cast<long>(basis.size());
+      basis.push_back(std::move(v));
+    }
+  }
+  for (int x : bad) {
+    Bits z(words, 0);
+    flip(z, bitOf(a, b));
+    flip(z, bitOf(b, x));
+    flip(z, bitOf(x, a));
+    for (long h = highest(z); h >= 0; h = highest(z)) {
+      if (lead_of[h] < 0)
+        return false; // not a boundary in the patch: may be a tunnel or hole
+      for (std::size_t w = 0; w < words; ++w)
+        z[w] ^= basis[lead_of[h]][w];
+    }
+  }
+  return true;
+}
+
+MedialMesh
+EdgeCollapser::extract() const
+{
+  std::vector<int> index(sphere_.size(), -1);
+  std::vector<Eigen::Vector3d> centers;
+  std::vector<double> radii;
+  centers.reserve(alive_count_);
+  radii.reserve(alive_count_);
+  for (std::size_t v = 0; v < sphere_.size(); ++v) {
+    if (!v_alive_[v])
+      continue;
+    index[v] = static_cast<int>(centers.size());
+    centers.push_back(sphere_[v].head<3>() * scale_ + origin_);
+    radii.push_back(std::max(0.0, sphere_[v][3] * scale_));
+  }
+  std::vector<Eigen::Vector2i> edges;
+  for (std::size_t e = 0; e < e_v_.size(); ++e)
+    if (e_alive_[e])
+      edges.emplace_back(index[e_v_[e][0]], index[e_v_[e][1]]);
+  std::vector<Eigen::Vector3i> triangles;
+  for (std::size_t f = 0; f < f_v_.size(); ++f)
+    if (f_alive_[f]) {
+      std::array<int, 3> t = {index[f_v_[f][0]], index[f_v_[f][1]], index[f_v_[f][2]]};
+      std::sort(t.begin(), t.end()); // Q-MAT writes ascending corners; winding means nothing
+      triangles.emplace_back(t[0], t[1], t[2]);
+    }
+  return MedialMesh(std::move(centers), std::move(radii), edges, triangles);
+}
+
+} // namespace
+
+QmatSimplification::QmatSimplification()
+: normalisation_scale_(0.0)
+, base_target_(2000)
+, structured_target_(-1)
+, k_(1e-5)
+, boundary_weight_(0.1)
+, prevent_inversion_(true)
+, preserve_cavities_(false)
+{}
+
+bool
+QmatSimplification::compute(MedialMesh& base, MedialMesh& structured)
+{
+  base = MedialMesh();
+  structured = MedialMesh();
+  initial_count_ = 0;
+  resolved_structured_target_ = 0;
+  collapse_count_ = 0;
+  penalised_collapse_count_ = 0;
+  if (!input_ || input_->empty()) {
+    PCL_ERROR("[segmat::QmatSimplification::compute] no input medial mesh (or it is empty)\n");
+    return false;
+  }
+  if (base_target_ < 1 || (structured_target_ < 1 && structured_target_ != -1)) {
+    PCL_ERROR("[segmat::QmatSimplification::compute] invalid targets: base %d, structured %d "
+              "(need >= 1, structured may be -1)\n",
+              base_target_, structured_target_);
+    return false;
+  }
+  if (!std::isfinite(k_) || k_ < 0.0 || !std::isfinite(boundary_weight_) || boundary_weight_ < 0.0) {
+    PCL_ERROR("[segmat::QmatSimplification::compute] k and the boundary weight must be finite "
+              "and >= 0\n");
+    return false;
+  }
+  const MedialMesh& mat = *input_;
+  const std::size_t input_count = mat.numVertices();
+  resolved_structured_target_ =
+      structured_target_ > 0
+          ? structured_target_
+          : std::max(15, static_cast<int>(0.001 * static_cast<double>(input_count)));
+
+  // Normalised coordinates: centred on the centres' bounding box, divided by the scale.
+  Eigen::Vector3d lo = mat.centers().front(), hi = lo;
+  for (const Eigen::Vector3d& c : mat.centers()) {
+    lo = lo.cwiseMin(c);
+    hi = hi.cwiseMax(c);
+  }
+  double scale = normalisation_scale_;
+  if (!(scale > 0.0) || !std::isfinite(scale))
+    scale = (hi - lo).norm();
+  if (!(scale > 0.0))
+    scale = 1.0;
+
+  EdgeCollapser collapser(mat, 0.5 * (lo + hi), scale,
+                          Settings{k_, boundary_weight_, prevent_inversion_, preserve_cavities_});
+  initial_count_ = collapser.aliveCount();
+  if (initial_count_ == 0) {
+    PCL_ERROR("[segmat::QmatSimplification::compute] the medial mesh has no edges\n");
+    return false;
+  }
+
+  const std::size_t base_target = static_cast<std::size_t>(base_target_);
+  if (collapser.run(base_target) > base_target)
+    PCL_WARN("[segmat::QmatSimplification::compute] base target %d not reached: every further "
+             "collapse changes the topology; %zu spheres kept\n",
+             base_target_, collapser.aliveCount());
+  base = collapser.extract();
+
+  const std::size_t structured_target = static_cast<std::size_t>(resolved_structured_target_);
+  if (structured_target < collapser.aliveCount() &&
+      collapser.run(structured_target) > structured_target)
+    PCL_WARN("[segmat::QmatSimplification::compute] structured target %d not reached: every "
+             "further collapse changes the topology; %zu spheres kept\n",
+             resolved_structured_target_, collapser.aliveCount());
+  structured = collapser.extract();
+  collapse_count_ = collapser.collapses();
+  penalised_collapse_count_ = collapser.penalisedCollapses();
+  return true;
+}
+
+} // namespace segmat
