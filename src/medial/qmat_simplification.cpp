@@ -13,7 +13,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <queue>
 #include <vector>
 
 namespace segmat {
@@ -25,30 +24,126 @@ constexpr double kHalfPi = 1.57079632679489661923;
 constexpr int kPopPatchRings = 2;
 constexpr int kStuckPatchRings = 4;
 
-/** One priority-queue entry; stale ones are recognised by their version (lazy deletion). */
-struct QueueEntry
+/** A collapse candidate's place in the queue: tier, then cost, then the edge's endpoint indices
+ * (deterministic ties). */
+struct QueueKey
 {
-  double cost;
-  int lo, hi; ///< the edge's endpoints when pushed: deterministic tie-break
-  int edge;
-  std::uint32_t version;
-  std::uint8_t tier; ///< 0: normal; 1: every candidate flips a triangle (deferred)
+  double cost = 0.0;
+  int lo = 0, hi = 0;
+  std::uint8_t tier = 0; ///< 0: normal; 1: every candidate flips a triangle (deferred)
+
+  bool
+  operator<(const QueueKey& o) const
+  {
+    if (tier != o.tier)
+      return tier < o.tier;
+    if (cost != o.cost)
+      return cost < o.cost;
+    if (lo != o.lo)
+      return lo < o.lo;
+    return hi < o.hi;
+  }
 };
 
-/** Priority-queue order: "a comes after b". */
-struct ComesAfter
+/** Indexed 4-ary min-heap of edges: one entry per edge, keys updated in place, so the heap never
+ * holds stale entries and stays no larger than the number of live edges. */
+class EdgeHeap
 {
-  bool
-  operator()(const QueueEntry& a, const QueueEntry& b) const
+public:
+  explicit EdgeHeap(std::size_t num_edges = 0) : pos_(num_edges, -1) {}
+
+  bool empty() const { return nodes_.empty(); }
+  int topEdge() const { return nodes_.front().edge; }
+  const QueueKey& topKey() const { return nodes_.front().key; }
+
+  /** Inserts edge e or changes its key. */
+  void
+  set(int e, const QueueKey& key)
   {
-    if (a.tier != b.tier)
-      return a.tier > b.tier;
-    if (a.cost != b.cost)
-      return a.cost > b.cost;
-    if (a.lo != b.lo)
-      return a.lo > b.lo;
-    return a.hi > b.hi;
+    if (pos_[e] < 0) {
+      pos_[e] = static_cast<int>(nodes_.size());
+      nodes_.push_back({key, e});
+      siftUp(pos_[e]);
+      return;
+    }
+    const int i = pos_[e];
+    const bool up = key < nodes_[i].key;
+    nodes_[i].key = key;
+    if (up)
+      siftUp(i);
+    else
+      siftDown(i);
   }
+
+  /** Removes edge e if present. */
+  void
+  erase(int e)
+  {
+    const int i = pos_[e];
+    if (i < 0)
+      return;
+    pos_[e] = -1;
+    const Node last = nodes_.back();
+    nodes_.pop_back();
+    if (i == static_cast<int>(nodes_.size()))
+      return;
+    nodes_[i] = last;
+    pos_[last.edge] = i;
+    if (i > 0 && last.key < nodes_[(i - 1) / 4].key)
+      siftUp(i);
+    else
+      siftDown(i);
+  }
+
+private:
+  struct Node
+  {
+    QueueKey key;
+    int edge;
+  };
+
+  void
+  siftUp(int i)
+  {
+    const Node n = nodes_[i];
+    while (i > 0) {
+      const int parent = (i - 1) / 4;
+      if (!(n.key < nodes_[parent].key))
+        break;
+      nodes_[i] = nodes_[parent];
+      pos_[nodes_[i].edge] = i;
+      i = parent;
+    }
+    nodes_[i] = n;
+    pos_[n.edge] = i;
+  }
+
+  void
+  siftDown(int i)
+  {
+    const Node n = nodes_[i];
+    const int size = static_cast<int>(nodes_.size());
+    for (;;) {
+      const int first = 4 * i + 1;
+      if (first >= size)
+        break;
+      int best = first;
+      const int last = std::min(first + 4, size);
+      for (int c = first + 1; c < last; ++c)
+        if (nodes_[c].key < nodes_[best].key)
+          best = c;
+      if (!(nodes_[best].key < n.key))
+        break;
+      nodes_[i] = nodes_[best];
+      pos_[nodes_[i].edge] = i;
+      i = best;
+    }
+    nodes_[i] = n;
+    pos_[n.edge] = i;
+  }
+
+  std::vector<Node> nodes_;
+  std::vector<int> pos_;
 };
 
 /** The sphere an edge would collapse to and the cost of doing so. */
@@ -57,6 +152,9 @@ struct CollapseChoice
   Eigen::Vector4d sphere;
   double cost = 0.0;
   std::uint8_t tier = 0;
+  /// Triangles that made cheaper candidates flip (-1: unused). While they stand unchanged the
+  /// key cannot drop; once one changes, it may.
+  std::array<int, 4> blockers = {-1, -1, -1, -1};
 };
 
 struct Settings
@@ -95,7 +193,11 @@ private:
 
   void buildQuadrics(const MedialMesh& mat);
   CollapseChoice evaluate(int e) const;
-  bool flips(int a, int b, const Eigen::Vector3d& x) const;
+  QueueKey keyOf(int e, const CollapseChoice& c) const
+  {
+    return {c.cost, std::min(e_v_[e][0], e_v_[e][1]), std::max(e_v_[e][0], e_v_[e][1]), c.tier};
+  }
+  Eigen::Vector3d faceNormal(int f) const;
   bool linkCondition(int e);
   bool unblockByHomology();
   bool killedCyclesAreBoundaries(int e, int rings);
@@ -110,8 +212,12 @@ private:
 
   // vertices
   std::vector<Eigen::Vector4d> sphere_;
-  std::vector<SphereQuadric> face_q_;   ///< slab tangent planes (§8.3)
-  std::vector<SphereQuadric> border_q_; ///< sheet borders, pure edges, branch tips (§8.3)
+  struct Quadrics
+  {
+    SphereQuadric face; ///< slab tangent planes only (§8.3)
+    SphereQuadric all;  ///< plus sheet borders, pure edges, branch tips (§8.3)
+  };
+  std::vector<Quadrics> q_; ///< side by side: an evaluation reads both
   std::vector<char> v_alive_;
   std::vector<std::vector<int>> v_edges_, v_faces_;
   std::vector<std::uint32_t> mark_;
@@ -119,12 +225,16 @@ private:
   // edges
   std::vector<std::array<int, 2>> e_v_;
   std::vector<char> e_alive_, e_blocked_;
-  std::vector<std::uint32_t> e_version_;
+  std::vector<std::size_t> e_evaluated_; ///< collapse count when the edge's key was computed
+  std::vector<Eigen::Vector4d> e_target_; ///< the sphere chosen then
+  std::vector<std::array<int, 4>> e_blockers_; ///< CollapseChoice::blockers then
+  std::vector<std::size_t> v_touched_;   ///< collapse count when a triangle around it changed
   // faces
   std::vector<std::array<int, 3>> f_v_;
+  std::vector<Eigen::Vector3d> f_normal_; ///< (p1 − p0) × (p2 − p0); zero when degenerate
   std::vector<char> f_alive_;
 
-  std::priority_queue<QueueEntry, std::vector<QueueEntry>, ComesAfter> queue_;
+  EdgeHeap heap_;
   std::size_t alive_count_ = 0;
   std::size_t collapses_ = 0;
   std::size_t penalised_ = 0;
@@ -145,8 +255,7 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
   alive_count_ = static_cast<std::size_t>(n);
   const std::size_t capacity = n > 0 ? 2 * static_cast<std::size_t>(n) - 1 : 0;
   sphere_.reserve(capacity);
-  face_q_.reserve(capacity);
-  border_q_.reserve(capacity);
+  q_.reserve(capacity);
   v_alive_.reserve(capacity);
   v_edges_.reserve(capacity);
   v_faces_.reserve(capacity);
@@ -160,8 +269,7 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
     sphere_.push_back(s);
     v_alive_.push_back(1);
   }
-  face_q_.resize(n);
-  border_q_.resize(n);
+  q_.resize(n);
   v_edges_.resize(n);
   v_faces_.resize(n);
 
@@ -175,7 +283,10 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
   }
   e_alive_.assign(e_v_.size(), 1);
   e_blocked_.assign(e_v_.size(), 0);
-  e_version_.assign(e_v_.size(), 0);
+  e_evaluated_.assign(e_v_.size(), 0);
+  e_target_.resize(e_v_.size());
+  e_blockers_.resize(e_v_.size());
+  v_touched_.assign(capacity, 0);
 
   f_v_.reserve(mat.numTriangles());
   for (const Eigen::Vector3i& t : mat.triangles()) {
@@ -185,6 +296,9 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
       v_faces_[to_internal[t[k]]].push_back(id);
   }
   f_alive_.assign(f_v_.size(), 1);
+  f_normal_.resize(f_v_.size());
+  for (std::size_t f = 0; f < f_v_.size(); ++f)
+    f_normal_[f] = faceNormal(static_cast<int>(f));
 
   buildQuadrics(mat);
 
@@ -194,12 +308,24 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
 #pragma omp parallel for schedule(static)
   for (int e = 0; e < num_edges; ++e)
     first[e] = evaluate(e);
-  std::vector<QueueEntry> entries;
-  entries.reserve(num_edges);
-  for (int e = 0; e < num_edges; ++e)
-    entries.push_back({first[e].cost, std::min(e_v_[e][0], e_v_[e][1]),
-                       std::max(e_v_[e][0], e_v_[e][1]), e, 0, first[e].tier});
-  queue_ = decltype(queue_)(ComesAfter(), std::move(entries));
+  heap_ = EdgeHeap(e_v_.size());
+  for (int e = 0; e < num_edges; ++e) {
+    heap_.set(e, keyOf(e, first[e]));
+    e_target_[e] = first[e].sphere;
+    e_blockers_[e] = first[e].blockers;
+  }
+}
+
+Eigen::Vector3d
+EdgeCollapser::faceNormal(int f) const
+{
+  const auto& t = f_v_[f];
+  const Eigen::Vector3d e1 = sphere_[t[1]].head<3>() - sphere_[t[0]].head<3>();
+  const Eigen::Vector3d e2 = sphere_[t[2]].head<3>() - sphere_[t[0]].head<3>();
+  const Eigen::Vector3d n = e1.cross(e2);
+  // A (nearly) degenerate triangle has no orientation to lose: zero disables its flip test.
+  return n.squaredNorm() > 1e-14 * e1.squaredNorm() * e2.squaredNorm() ? n
+                                                                          : Eigen::Vector3d::Zero();
 }
 
 void
@@ -214,8 +340,10 @@ EdgeCollapser::buildQuadrics(const MedialMesh& mat)
     const SphereQuadric q = SphereQuadric::fromPlane(n_plus, sphere_[t[0]]) +
                             SphereQuadric::fromPlane(n_minus, sphere_[t[0]]);
     for (int k = 0; k < 3; ++k)
-      face_q_[t[k]] += q;
+      q_[t[k]].face += q;
   }
+  for (Quadrics& q : q_)
+    q.all = q.face;
 
   // Q-MAT "PreservBoundaryMethodFour" (§8.3): weight bound_weight · 0.1 · ratio².
   for (std::size_t me = 0; me < mat.numEdges(); ++me) {
@@ -250,8 +378,8 @@ EdgeCollapser::buildQuadrics(const MedialMesh& mat)
       Eigen::Vector3d t = (face_normal / len).cross(ab);
       if (t.dot(sphere_[third].head<3>() - sa.head<3>()) > 0.0)
         t = -t;
-      border_q_[a] += SphereQuadric::fromPlane(t, sa, w);
-      border_q_[b] += SphereQuadric::fromPlane(t, sb, w);
+      q_[a].all += SphereQuadric::fromPlane(t, sa, w);
+      q_[b].all += SphereQuadric::fromPlane(t, sb, w);
       continue;
     }
     // Pure edge (a medial cone). The published code took the tangent planes of the spheres a, b
@@ -266,42 +394,17 @@ EdgeCollapser::buildQuadrics(const MedialMesh& mat)
         break;
       const Eigen::Vector3d companion = ab.cross(n);
       for (int v : {a, b}) {
-        border_q_[v] += SphereQuadric::fromPlane(n, sphere_[v], 0.5);
-        border_q_[v] += SphereQuadric::fromPlane(companion, sphere_[v], 0.5);
+        q_[v].all += SphereQuadric::fromPlane(n, sphere_[v], 0.5);
+        q_[v].all += SphereQuadric::fromPlane(companion, sphere_[v], 0.5);
       }
     }
     // Branch tips (a sphere with this one edge) are held by a plane across the axis.
     const int ia = mat.edges()[e][0], ib = mat.edges()[e][1];
     if (mat.vertexEdges(ia).size() == 1)
-      border_q_[a] += SphereQuadric::fromPlane(ab, sa, w);
+      q_[a].all += SphereQuadric::fromPlane(ab, sa, w);
     if (mat.vertexEdges(ib).size() == 1)
-      border_q_[b] += SphereQuadric::fromPlane(-ab, sb, w);
+      q_[b].all += SphereQuadric::fromPlane(-ab, sb, w);
   }
-}
-
-bool
-EdgeCollapser::flips(int a, int b, const Eigen::Vector3d& x) const
-{
-  for (int v : {a, b}) {
-    const int w = v == a ? b : a;
-    for (int f : v_faces_[v]) {
-      if (hasVertex(f, w))
-        continue; // disappears with the collapse
-      const auto& t = f_v_[f];
-      Eigen::Vector3d p[3] = {sphere_[t[0]].head<3>(), sphere_[t[1]].head<3>(),
-                              sphere_[t[2]].head<3>()};
-      const Eigen::Vector3d e1 = p[1] - p[0], e2 = p[2] - p[0];
-      const Eigen::Vector3d before = e1.cross(e2);
-      // A (nearly) degenerate triangle has no orientation to lose.
-      if (!(before.squaredNorm() > 1e-14 * e1.squaredNorm() * e2.squaredNorm()))
-        continue;
-      p[t[0] == v ? 0 : (t[1] == v ? 1 : 2)] = x;
-      const Eigen::Vector3d after = (p[1] - p[0]).cross(p[2] - p[0]);
-      if (before.dot(after) < 0.0)
-        return true;
-    }
-  }
-  return false;
 }
 
 CollapseChoice
@@ -310,20 +413,76 @@ EdgeCollapser::evaluate(int e) const
   const int a = e_v_[e][0], b = e_v_[e][1];
   const Eigen::Vector4d& sa = sphere_[a];
   const Eigen::Vector4d& sb = sphere_[b];
-  const SphereQuadric face_q = face_q_[a] + face_q_[b];
-  const SphereQuadric q = face_q + border_q_[a] + border_q_[b];
-  bool has_faces = false;
-  for (int f : v_faces_[a])
-    if (hasVertex(f, b)) {
-      has_faces = true;
-      break;
+  const SphereQuadric q = q_[a].all + q_[b].all;
+
+  // Triangles that survive the collapse, each as a half-space test: moving the corner v of a
+  // triangle (v, q1, q2) to x flips it iff (q1 − x)·w < 0 with w = (q2 − q1) × n, n its normal.
+  // Making it (nearly) degenerate counts as a flip — new sin(angle at q1)² <= 1e-14, the same
+  // test as faceNormal(): a degenerate triangle has no orientation left to protect, and later
+  // collapses would fold it over unnoticed.
+  struct FlipTest
+  {
+    Eigen::Vector3d q1;
+    Eigen::Vector3d w;
+    double w_norm2;
+    int face;
+  };
+  // Most vertices carry a few dozen triangles; a rare hub spills to the heap.
+  constexpr std::size_t kInline = 64;
+  FlipTest inline_tests[kInline];
+  std::vector<FlipTest> spilled;
+  std::size_t num_tests = 0;
+  auto addTest = [&](const FlipTest& t) {
+    if (num_tests < kInline)
+      inline_tests[num_tests] = t;
+    else {
+      if (spilled.empty())
+        spilled.assign(inline_tests, inline_tests + kInline);
+      spilled.push_back(t);
     }
+    ++num_tests;
+  };
+  bool has_faces = false;
+  for (int v : {a, b})
+    for (int f : v_faces_[v]) {
+      const auto& t = f_v_[f];
+      const int k = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+      const int q1 = t[(k + 1) % 3], q2 = t[(k + 2) % 3];
+      if (q1 == a || q1 == b || q2 == a || q2 == b) {
+        has_faces = true; // on ab: disappears with the collapse
+        continue;
+      }
+      if (!settings_.prevent_inversion || f_normal_[f].isZero())
+        continue;
+      const Eigen::Vector3d p1 = sphere_[q1].head<3>();
+      const Eigen::Vector3d w = (sphere_[q2].head<3>() - p1).cross(f_normal_[f]);
+      addTest({p1, w, w.squaredNorm(), f});
+    }
+  // The first triangle that m would flip, or -1.
+  const FlipTest* tests = spilled.empty() ? inline_tests : spilled.data();
+  auto flipped = [&](const Eigen::Vector4d& m) {
+    const Eigen::Vector3d x = m.head<3>();
+    for (std::size_t i = 0; i < num_tests; ++i) {
+      const FlipTest& ft = tests[i];
+      const Eigen::Vector3d d = ft.q1 - x;
+      const double side = d.dot(ft.w);
+      if (side <= 0.0 || side * side <= 1e-14 * ft.w_norm2 * d.squaredNorm())
+        return ft.face;
+    }
+    return -1;
+  };
+
   const Eigen::Vector4d mid = 0.5 * (sa + sb);
   const Eigen::Vector4d* fallback[3] = {&sa, &sb, &mid};
-  double fallback_cost[3] = {q(sa), q(sb), q(mid)};
+  double fallback_cost[3] = {-1.0, -1.0, -1.0}; // filled when needed
+  auto fillFallbackCosts = [&] {
+    if (fallback_cost[0] < 0.0)
+      for (int i = 0; i < 3; ++i)
+        fallback_cost[i] = std::max(0.0, q(*fallback[i]));
+  };
 
   CollapseChoice choice;
-  if (!has_faces || face_q.invertible()) {
+  if (!has_faces || (q_[a].face + q_[b].face).invertible()) {
     // §8.4 case 1: the optimal sphere m* = A⁻¹b; the midpoint when singular or r < 0.
     if (!q.minimiser(choice.sphere) || !(choice.sphere[3] >= 0.0))
       choice.sphere = mid;
@@ -332,6 +491,7 @@ EdgeCollapser::evaluate(int e) const
   else {
     // §8.4 case 2 (flat or degenerate slabs): the cheapest of the endpoints and the midpoint,
     // scored with the border terms (the published code dropped them here).
+    fillFallbackCosts();
     int best = 0;
     for (int i = 1; i < 3; ++i)
       if (fallback_cost[i] < fallback_cost[best])
@@ -340,20 +500,23 @@ EdgeCollapser::evaluate(int e) const
     choice.cost = fallback_cost[best];
   }
 
-  if (settings_.prevent_inversion && flips(a, b, choice.sphere.head<3>())) {
+  if (num_tests > 0 && (choice.blockers[0] = flipped(choice.sphere)) >= 0) {
     // The intended rule (the published code inverted it, §8.4): the cheapest candidate that
     // flips nothing, else keep m* but defer the collapse to the penalty tier.
+    fillFallbackCosts();
     int order[3] = {0, 1, 2};
     std::stable_sort(order, order + 3,
                      [&](int i, int j) { return fallback_cost[i] < fallback_cost[j]; });
     bool found = false;
-    for (int i : order)
-      if (!flips(a, b, fallback[i]->head<3>())) {
+    for (int k = 0; k < 3 && !found; ++k) {
+      const int i = order[k];
+      choice.blockers[k + 1] = flipped(*fallback[i]);
+      if (choice.blockers[k + 1] < 0) {
         choice.sphere = *fallback[i];
         choice.cost = fallback_cost[i];
         found = true;
-        break;
       }
+    }
     if (!found)
       choice.tier = 1;
   }
@@ -420,13 +583,14 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
   const int a = e_v_[e][0], b = e_v_[e][1];
   const int m = static_cast<int>(sphere_.size());
   sphere_.push_back(target);
-  face_q_.push_back(face_q_[a] + face_q_[b]);
-  border_q_.push_back(border_q_[a] + border_q_[b]);
+  q_.push_back({q_[a].face + q_[b].face, q_[a].all + q_[b].all});
   v_alive_.push_back(1);
   v_edges_.emplace_back();
   v_faces_.emplace_back();
   std::vector<int>& m_faces = v_faces_[m];
   std::vector<int>& m_edges = v_edges_[m];
+  m_faces.reserve(v_faces_[a].size() + v_faces_[b].size());
+  m_edges.reserve(v_edges_[a].size() + v_edges_[b].size());
 
   // Triangles: those on ab vanish, the others are re-pointed to m. Two of them become one only
   // when axy and bxy both exist (a cavity closing, see linkCondition); both x and y are then
@@ -465,6 +629,7 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
         }
       }
       t[k_v] = m;
+      f_normal_[f] = faceNormal(f);
       m_faces.push_back(f);
     }
 
@@ -478,6 +643,7 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
       const int x = other(e2, v);
       if (mark_[x] == stamp_) {
         e_alive_[e2] = 0;
+        heap_.erase(e2);
         removeFrom(v_edges_[x], e2);
         continue;
       }
@@ -495,16 +661,29 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
   --alive_count_;
   ++collapses_;
 
+  // Every triangle around a neighbour of m may have changed: their edges' keys are stale.
+  v_touched_[m] = collapses_;
+  for (int e2 : v_edges_[m])
+    v_touched_[other(e2, m)] = collapses_;
   for (int e2 : v_edges_[m])
     push(e2);
-  // Edges around m whose link may have changed get another chance.
+  // Around m: blocked edges get another chance (their link may have changed), and keys that
+  // may have dropped — a triangle that made a cheaper candidate flip has changed — are
+  // refreshed now. Every other key there can only have risen (an edge's preferred sphere
+  // depends on its own quadrics alone) and is re-validated lazily when it reaches the top.
+  auto changed = [&](int f) { return f >= 0 && (!f_alive_[f] || hasVertex(f, m)); };
   for (int e2 : v_edges_[m]) {
     const int x = other(e2, m);
-    for (int e3 : v_edges_[x])
-      if (e_blocked_[e3]) {
+    for (int e3 : v_edges_[x]) {
+      if (e_evaluated_[e3] == collapses_)
+        continue; // just done
+      const auto& bl = e_blockers_[e3];
+      if (e_blocked_[e3] || changed(bl[0]) || changed(bl[1]) || changed(bl[2]) ||
+          changed(bl[3])) {
         e_blocked_[e3] = 0;
         push(e3);
       }
+    }
   }
 }
 
@@ -512,36 +691,38 @@ void
 EdgeCollapser::push(int e)
 {
   const CollapseChoice c = evaluate(e);
-  const int a = e_v_[e][0], b = e_v_[e][1];
-  queue_.push({c.cost, std::min(a, b), std::max(a, b), e, ++e_version_[e], c.tier});
+  heap_.set(e, keyOf(e, c));
+  e_target_[e] = c.sphere;
+  e_blockers_[e] = c.blockers;
+  e_evaluated_[e] = collapses_;
 }
 
 std::size_t
 EdgeCollapser::run(std::size_t target)
 {
   while (alive_count_ > target) {
-    if (queue_.empty()) {
+    if (heap_.empty()) {
       if (unblockByHomology())
         continue;
       break;
     }
-    const QueueEntry top = queue_.top();
-    queue_.pop();
-    const int e = top.edge;
-    if (!e_alive_[e] || e_version_[e] != top.version)
-      continue;
+    const int e = heap_.topEdge();
     if (!linkCondition(e) && !killedCyclesAreBoundaries(e, kPopPatchRings)) {
+      heap_.erase(e);
       e_blocked_[e] = 1; // retried when its neighbourhood changes
       continue;
     }
-    // Costs of edges near a collapse can go stale (flips, triangle counts): re-validate.
-    const CollapseChoice c = evaluate(e);
-    if (c.tier != top.tier || c.cost != top.cost) {
-      queue_.push({c.cost, top.lo, top.hi, e, ++e_version_[e], c.tier});
-      continue;
+    const int a = e_v_[e][0], b = e_v_[e][1];
+    // Keys near a collapse go stale (flips, triangles on the edge): re-validate those.
+    if (std::max(v_touched_[a], v_touched_[b]) > e_evaluated_[e]) {
+      const QueueKey old = heap_.topKey();
+      push(e);
+      if (old < heap_.topKey() || heap_.topKey() < old || heap_.topEdge() != e)
+        continue;
     }
-    penalised_ += c.tier;
-    collapse(e, c.sphere);
+    penalised_ += heap_.topKey().tier;
+    heap_.erase(e);
+    collapse(e, e_target_[e]);
   }
   return alive_count_;
 }
@@ -552,21 +733,24 @@ EdgeCollapser::unblockByHomology()
   if (settings_.preserve_cavities)
     return false;
   // Every live edge is blocked here (the queue is empty). Try them cheapest first.
-  std::vector<std::pair<QueueEntry, CollapseChoice>> blocked;
-  for (std::size_t e = 0; e < e_v_.size(); ++e) {
-    if (!e_alive_[e])
-      continue;
-    const CollapseChoice c = evaluate(static_cast<int>(e));
-    const int a = e_v_[e][0], b = e_v_[e][1];
-    blocked.push_back(
-        {{c.cost, std::min(a, b), std::max(a, b), static_cast<int>(e), 0, c.tier}, c});
-  }
+  struct Candidate
+  {
+    QueueKey key;
+    int edge;
+    CollapseChoice choice;
+  };
+  std::vector<Candidate> blocked;
+  for (std::size_t e = 0; e < e_v_.size(); ++e)
+    if (e_alive_[e]) {
+      const CollapseChoice c = evaluate(static_cast<int>(e));
+      blocked.push_back({keyOf(static_cast<int>(e), c), static_cast<int>(e), c});
+    }
   std::sort(blocked.begin(), blocked.end(),
-            [](const auto& x, const auto& y) { return ComesAfter()(y.first, x.first); });
-  for (const auto& [entry, choice] : blocked)
-    if (killedCyclesAreBoundaries(entry.edge, kStuckPatchRings)) {
-      penalised_ += choice.tier;
-      collapse(entry.edge, choice.sphere);
+            [](const Candidate& x, const Candidate& y) { return x.key < y.key; });
+  for (const Candidate& candidate : blocked)
+    if (killedCyclesAreBoundaries(candidate.edge, kStuckPatchRings)) {
+      penalised_ += candidate.choice.tier;
+      collapse(candidate.edge, candidate.choice.sphere);
       return true;
     }
   return false;
@@ -772,14 +956,15 @@ QmatSimplification::compute(MedialMesh& base, MedialMesh& structured)
   }
 
   const std::size_t base_target = static_cast<std::size_t>(base_target_);
-  if (collapser.run(base_target) > base_target)
+  const bool stuck = collapser.run(base_target) > base_target;
+  if (stuck)
     PCL_WARN("[segmat::QmatSimplification::compute] base target %d not reached: every further "
              "collapse changes the topology; %zu spheres kept\n",
              base_target_, collapser.aliveCount());
   base = collapser.extract();
 
   const std::size_t structured_target = static_cast<std::size_t>(resolved_structured_target_);
-  if (structured_target < collapser.aliveCount() &&
+  if (!stuck && structured_target < collapser.aliveCount() &&
       collapser.run(structured_target) > structured_target)
     PCL_WARN("[segmat::QmatSimplification::compute] structured target %d not reached: every "
              "further collapse changes the topology; %zu spheres kept\n",

@@ -21,7 +21,7 @@ class SphereQuadric
 {
 public:
   /** \brief The zero quadric. */
-  SphereQuadric() : A_(Eigen::Matrix4d::Zero()), b_(Eigen::Vector4d::Zero()), c_(0.0) {}
+  SphereQuadric() = default;
 
   /** \brief The SQEM of one plane.
    * \param[in] normal plane normal n (unit for a true tangent plane; Q-MAT's boundary planes use
@@ -34,10 +34,7 @@ public:
 
   /** \brief Q(m) = ½·mᵀAm − bᵀm + c (may be a hair below 0 by rounding). */
   double
-  operator()(const Eigen::Vector4d& m) const
-  {
-    return 0.5 * m.dot(A_ * m) - b_.dot(m) + c_;
-  }
+  operator()(const Eigen::Vector4d& m) const;
 
   /** \brief The sphere minimising Q: A·m = b.
    * \param[out] m the minimiser
@@ -50,15 +47,16 @@ public:
   bool
   invertible() const;
 
+  /** \brief Adds another quadric (the error of both plane sets). */
   SphereQuadric&
   operator+=(const SphereQuadric& o)
   {
-    A_ += o.A_;
-    b_ += o.b_;
-    c_ += o.c_;
+    for (int i = 0; i < kSize; ++i)
+      v_[i] += o.v_[i];
     return *this;
   }
 
+  /** \brief Sum of two quadrics. */
   friend SphereQuadric
   operator+(SphereQuadric a, const SphereQuadric& o)
   {
@@ -66,17 +64,27 @@ public:
     return a;
   }
 
-  /** \brief The 4×4 matrix A (twice the quadratic form). */
-  const Eigen::Matrix4d& A() const { return A_; }
+  /** \brief The symmetric 4×4 matrix A (twice the quadratic form). */
+  Eigen::Matrix4d
+  A() const;
   /** \brief The linear term b. */
-  const Eigen::Vector4d& b() const { return b_; }
+  Eigen::Vector4d
+  b() const
+  {
+    return {v_[10], v_[11], v_[12], v_[13]};
+  }
   /** \brief The constant c. */
-  double c() const { return c_; }
+  double
+  c() const
+  {
+    return v_[14];
+  }
 
 private:
-  Eigen::Matrix4d A_;
-  Eigen::Vector4d b_;
-  double c_;
+  // Packed: A's upper triangle row by row (00 01 02 03 11 12 13 22 23 33), b, c. 120 bytes, so
+  // that simplifying a 100k-sphere MAT touches half the memory of a full Matrix4d.
+  static constexpr int kSize = 15;
+  double v_[kSize] = {};
 };
 
 /** \brief Q-MAT's stability ratio of a medial edge (reference-facts §8.4, `GetRatioHyperbolicEuclid`).
