@@ -1,0 +1,326 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <segmat/geometry/delaunay_3d.h>
+#include <segmat/geometry/surface_sampling.h>
+#include <segmat/geometry/weld_points.h>
+#include <segmat/geometry/winding_number.h>
+#include <segmat/medial/voronoi_mat.h>
+
+#include <pcl/console/print.h>
+
+#include <Eigen/Geometry>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <exception>
+#include <limits>
+
+namespace segmat {
+namespace {
+using Clock = std::chrono::steady_clock;
+
+double
+secondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/** A uniform number in [-0.5, 0.5) from a counter (splitmix64): the jitter of coordinate k of
+ * sample i depends on (i, k) only, so it is the same on every platform and thread count. */
+double
+hashToUnit(std::uint64_t counter)
+{
+  std::uint64_t z = counter + 0x9E3779B97F4A7C15ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0) - 0.5;
+}
+
+/** Circumcentre of tetrahedron (a, b, c, d); false when it is flat. Solved relative to a:
+ * x = (|b'|²(c'×d') + |c'|²(d'×b') + |d'|²(b'×c')) / (2 b'·(c'×d')). */
+bool
+circumcentre(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+             const Eigen::Vector3d& d, Eigen::Vector3d& centre, double& radius)
+{
+  const Eigen::Vector3d bb = b - a, cc = c - a, dd = d - a;
+  const Eigen::Vector3d cd = cc.cross(dd), db = dd.cross(bb), bc = bb.cross(cc);
+  const double det = bb.dot(cd);
+  // Relative flatness: det is six times the volume; compare with the edge lengths' product.
+  const double scale = bb.norm() * cc.norm() * dd.norm();
+  if (!(std::abs(det) > 1e-12 * scale))
+    return false;
+  const Eigen::Vector3d x =
+      (bb.squaredNorm() * cd + cc.squaredNorm() * db + dd.squaredNorm() * bc) / (2.0 * det);
+  if (!x.allFinite())
+    return false;
+  centre = a + x;
+  radius = x.norm();
+  return true;
+}
+
+// Local corner pairs of a tetrahedron's six edges.
+const int kEdgeCorners[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+} // namespace
+
+VoronoiMat::VoronoiMat()
+: max_spacing_(0.015)
+, max_samples_(12000)
+, jitter_(1e-6)
+, delaunay_method_(DelaunayMethod::Exact)
+, beta_(2.0)
+, threads_(1)
+{}
+
+bool
+VoronoiMat::compute(MedialMesh& output)
+{
+  output = MedialMesh();
+  statistics_ = VoronoiMatStatistics();
+  samples_.clear();
+  if (!mesh_) {
+    PCL_ERROR("[segmat::VoronoiMat::compute] No input mesh set.\n");
+    return false;
+  }
+  const TriangleMesh& mesh = *mesh_;
+  auto start = Clock::now();
+
+  // ---- validation and sampling
+  if (mesh.faces.empty()) {
+    PCL_ERROR("[segmat::VoronoiMat::compute] The input mesh has no faces.\n");
+    return false;
+  }
+  const int nv = static_cast<int>(mesh.vertices.size());
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const Eigen::Vector3i& face = mesh.faces[f];
+    if (face.minCoeff() < 0 || face.maxCoeff() >= nv) {
+      PCL_ERROR("[segmat::VoronoiMat::compute] Face %zu refers to a vertex out of range.\n", f);
+      return false;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d& p = mesh.vertices[face[k]];
+      if (!p.allFinite()) {
+        PCL_ERROR("[segmat::VoronoiMat::compute] Vertex %d has a non-finite coordinate.\n",
+                  face[k]);
+        return false;
+      }
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+  }
+  const double diagonal = (hi - lo).norm();
+  if (!(diagonal > 0.0) || !std::isfinite(diagonal)) {
+    PCL_ERROR("[segmat::VoronoiMat::compute] The input mesh has no extent.\n");
+    return false;
+  }
+  const double spacing = max_spacing_ > 0.0 ? max_spacing_ * diagonal : 0.0;
+  std::vector<Eigen::Vector3d> candidates = sampleSurface(mesh, spacing);
+  const std::vector<int> representative = weldPoints(candidates, 1e-9 * diagonal);
+  samples_.reserve(candidates.size());
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (representative[i] == static_cast<int>(i))
+      samples_.push_back(candidates[i]);
+  if (max_samples_ > 0 && samples_.size() > max_samples_) {
+    std::vector<Eigen::Vector3d> thinned;
+    for (int i : thinPointsToCount(samples_, max_samples_))
+      thinned.push_back(samples_[i]);
+    samples_.swap(thinned);
+  }
+  if (jitter_ > 0.0) {
+    const double amplitude = jitter_ * diagonal;
+    for (std::size_t i = 0; i < samples_.size(); ++i)
+      for (int k = 0; k < 3; ++k)
+        samples_[i][k] += amplitude * hashToUnit(3 * static_cast<std::uint64_t>(i) + k);
+  }
+  statistics_.num_samples = samples_.size();
+  if (samples_.size() < 4) {
+    PCL_ERROR("[segmat::VoronoiMat::compute] Only %zu distinct surface samples (need 4).\n",
+              samples_.size());
+    return false;
+  }
+  statistics_.seconds_sampling = secondsSince(start);
+
+  // ---- Delaunay
+  start = Clock::now();
+  DelaunayTetrahedra delaunay;
+  std::string message;
+  bool tetrahedralised = false;
+  if (delaunay_method_ == DelaunayMethod::Exact) {
+    tetrahedralised = delaunayTetrahedralizeExact(samples_, delaunay, message);
+    if (!tetrahedralised)
+      PCL_WARN("[segmat::VoronoiMat::compute] Exact Delaunay failed (%s); trying qhull.\n",
+               message.c_str());
+  }
+  if (!tetrahedralised && !delaunayTetrahedralize(samples_, delaunay, message)) {
+    PCL_ERROR("[segmat::VoronoiMat::compute] Delaunay tetrahedralisation failed: %s\n",
+              message.c_str());
+    return false;
+  }
+  samples_.swap(delaunay.points); // what the tetrahedra are Delaunay for
+  const int num_tets = static_cast<int>(delaunay.tetrahedra.size());
+  statistics_.num_tetrahedra = delaunay.tetrahedra.size();
+  statistics_.seconds_delaunay = secondsSince(start);
+
+  // ---- inside test
+  start = Clock::now();
+  std::vector<Eigen::Vector3d> centres(num_tets);
+  std::vector<double> radii(num_tets, 0.0);
+  std::vector<int> candidates_of;
+  std::vector<Eigen::Vector3d> queries;
+  candidates_of.reserve(num_tets);
+  queries.reserve(num_tets);
+  for (int t = 0; t < num_tets; ++t) {
+    const Eigen::Vector4i& v = delaunay.tetrahedra[t];
+    if (!circumcentre(samples_[v[0]], samples_[v[1]], samples_[v[2]], samples_[v[3]], centres[t],
+                      radii[t]))
+      continue;
+    // Q-MAT keeps a circumcentre only inside the bounding box; it is also a cheap pre-filter.
+    if ((centres[t].array() < lo.array()).any() || (centres[t].array() > hi.array()).any())
+      continue;
+    candidates_of.push_back(t);
+    queries.push_back(centres[t]);
+  }
+  WindingNumber winding_number(mesh);
+  winding_number.setAccuracy(beta_);
+  std::vector<char> inside(num_tets, 0);
+  if (winding_number.isClosed()) {
+    // A closed mesh has an integer winding number that changes only across faces: evaluate it at
+    // one circumcentre per connected group of candidate tetrahedra and carry it along the Voronoi
+    // edges (the segments between neighbouring circumcentres), counting the faces each crosses.
+    // Exact where the hierarchical evaluation is approximate, and far cheaper.
+    std::vector<char> is_candidate(num_tets, 0);
+    for (int t : candidates_of)
+      is_candidate[t] = 1;
+    const int unset = std::numeric_limits<int>::min();
+    std::vector<int> winding(num_tets, unset);
+    std::vector<int> queue;
+    queue.reserve(candidates_of.size());
+    for (int seed : candidates_of) {
+      if (winding[seed] != unset)
+        continue;
+      winding[seed] = static_cast<int>(std::lround(winding_number(centres[seed])));
+      ++statistics_.num_winding_evaluations;
+      queue.assign(1, seed);
+      for (std::size_t head = 0; head < queue.size(); ++head) {
+        const int t = queue[head];
+        for (int i = 0; i < 4; ++i) {
+          const int u = delaunay.neighbors[t][i];
+          if (u < 0 || !is_candidate[u] || winding[u] != unset)
+            continue;
+          int change = 0;
+          if (winding_number.windingNumberChange(centres[t], centres[u], change))
+            winding[u] = winding[t] + change;
+          else {
+            winding[u] = static_cast<int>(std::lround(winding_number(centres[u])));
+            ++statistics_.num_winding_evaluations;
+          }
+          queue.push_back(u);
+        }
+      }
+    }
+    for (int t : candidates_of)
+      inside[t] = winding[t] > 0;
+  }
+  else {
+    // Open or non-manifold-with-boundary input: the winding number is no longer piecewise
+    // constant, so evaluate it at every candidate.
+    std::vector<double> winding;
+    winding_number.evaluate(queries, winding, threads_);
+    statistics_.num_winding_evaluations = queries.size();
+    for (std::size_t i = 0; i < candidates_of.size(); ++i)
+      inside[candidates_of[i]] = winding[i] > 0.5;
+  }
+  std::vector<int> vertex_of(num_tets, -1);
+  std::vector<Eigen::Vector3d> mat_centres;
+  std::vector<double> mat_radii;
+  for (int t : candidates_of)
+    if (inside[t]) {
+      vertex_of[t] = static_cast<int>(mat_centres.size());
+      mat_centres.push_back(centres[t]);
+      mat_radii.push_back(radii[t]);
+    }
+  statistics_.num_inside = mat_centres.size();
+  statistics_.seconds_inside = secondsSince(start);
+
+  // ---- assembly
+  start = Clock::now();
+  std::vector<Eigen::Vector2i> edges;
+  std::vector<Eigen::Vector3i> triangles;
+  std::vector<int> ring;
+  for (int t = 0; t < num_tets; ++t) {
+    if (vertex_of[t] < 0)
+      continue;
+    const Eigen::Vector4i& corners = delaunay.tetrahedra[t];
+    const Eigen::Vector4i& across = delaunay.neighbors[t];
+    // Voronoi edges: dual to the facets shared with an inside neighbour (each pair once).
+    for (int i = 0; i < 4; ++i)
+      if (across[i] > t && vertex_of[across[i]] >= 0)
+        edges.emplace_back(vertex_of[t], vertex_of[across[i]]);
+    // Voronoi faces: dual to the Delaunay edges of t. Circulate the ring of tetrahedra around
+    // edge (a, b); it is made once, from its lowest-indexed tetrahedron, and only when every
+    // tetrahedron of the ring is finite and inside.
+    for (const auto& pair : kEdgeCorners) {
+      const int a = corners[pair[0]], b = corners[pair[1]];
+      int entry = -1; // the corner (not a, b) through whose opposite facet we leave
+      for (int k = 0; k < 4; ++k)
+        if (k != pair[0] && k != pair[1]) {
+          entry = corners[k];
+          break;
+        }
+      ring.clear();
+      ring.push_back(t);
+      int current = t;
+      bool closed = false;
+      while (static_cast<int>(ring.size()) <= num_tets) {
+        const Eigen::Vector4i& cur = delaunay.tetrahedra[current];
+        int leave_slot = -1, other = -1;
+        for (int k = 0; k < 4; ++k) {
+          if (cur[k] == entry)
+            leave_slot = k;
+          else if (cur[k] != a && cur[k] != b)
+            other = cur[k];
+        }
+        if (leave_slot < 0 || other < 0)
+          break; // inconsistent adjacency: give up on this face
+        const int next = delaunay.neighbors[current][leave_slot];
+        if (next < t || vertex_of[next] < 0) // hull, outside, or made from a lower tetrahedron
+          break;
+        if (next == t) {
+          closed = true;
+          break;
+        }
+        ring.push_back(next);
+        entry = other;
+        current = next;
+      }
+      if (!closed || ring.size() < 3)
+        continue;
+      const int apex = vertex_of[ring[0]];
+      for (std::size_t k = 1; k + 1 < ring.size(); ++k) {
+        triangles.emplace_back(apex, vertex_of[ring[k]], vertex_of[ring[k + 1]]);
+        if (k >= 2)
+          edges.emplace_back(apex, vertex_of[ring[k]]); // fan diagonal
+      }
+    }
+  }
+  try {
+    output = MedialMesh(std::move(mat_centres), std::move(mat_radii), edges, triangles);
+  }
+  catch (const std::exception& e) {
+    PCL_ERROR("[segmat::VoronoiMat::compute] Could not build the medial mesh: %s\n", e.what());
+    output = MedialMesh();
+    return false;
+  }
+  statistics_.num_vertices = output.numVertices();
+  statistics_.num_edges = output.numEdges();
+  statistics_.num_triangles = output.numTriangles();
+  statistics_.seconds_assembly = secondsSince(start);
+  return true;
+}
+
+} // namespace segmat
