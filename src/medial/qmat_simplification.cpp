@@ -15,6 +15,10 @@
 #include <cstdint>
 #include <vector>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace segmat {
 namespace {
 
@@ -153,8 +157,103 @@ struct CollapseChoice
   double cost = 0.0;
   std::uint8_t tier = 0;
   /// Triangles that made cheaper candidates flip (-1: unused). While they stand unchanged the
-  /// key cannot drop; once one changes, it may.
+  /// key cannot drop; once one changes, it may, but not below \a bound.
   std::array<int, 4> blockers = {-1, -1, -1, -1};
+  double bound = 0.0; ///< the cost were nothing to flip: a lower bound of every later cost
+};
+
+/** Morton (Z-order) code of a point of the normalised box [-1, 1]³, 21 bits per axis. */
+std::uint64_t
+mortonCode(const Eigen::Vector3d& p)
+{
+  auto spread = [](std::uint64_t x) {
+    x &= 0x1fffff;
+    x = (x | x << 32) & 0x1f00000000ffffULL;
+    x = (x | x << 16) & 0x1f0000ff0000ffULL;
+    x = (x | x << 8) & 0x100f00f00f00f00fULL;
+    x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+    x = (x | x << 2) & 0x1249249249249249ULL;
+    return x;
+  };
+  std::uint64_t code = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double t = std::min(1.0, std::max(0.0, 0.5 * (p[k] + 1.0)));
+    code |= spread(static_cast<std::uint64_t>(t * 2097151.0)) << k;
+  }
+  return code;
+}
+
+/** Incremental span of GF(2) vectors (echelon form keyed by leading bit), flat storage. Used to
+ * decide whether a cycle is a sum of triangle boundaries (a mod-2 boundary). */
+class Gf2Span
+{
+public:
+  /** Empties the span; vectors have \a bits entries. */
+  void
+  reset(std::size_t bits)
+  {
+    words_ = (bits + 63) / 64;
+    rows_.clear();
+    lead_row_.assign(bits, -1);
+    scratch_.assign(words_, 0);
+  }
+
+  /** The zeroed working vector to fill with flip(). */
+  std::uint64_t*
+  scratch()
+  {
+    std::fill(scratch_.begin(), scratch_.end(), 0);
+    return scratch_.data();
+  }
+
+  static void
+  flip(std::uint64_t* v, std::size_t bit)
+  {
+    v[bit / 64] ^= std::uint64_t(1) << (bit % 64);
+  }
+
+  /** Adds the working vector to the span. */
+  void
+  insertScratch()
+  {
+    const long h = reduce();
+    if (h < 0)
+      return;
+    lead_row_[h] = static_cast<long>(rows_.size() / words_);
+    rows_.insert(rows_.end(), scratch_.begin(), scratch_.end());
+  }
+
+  /** True when the working vector is in the span. */
+  bool
+  scratchInSpan()
+  {
+    return reduce() < 0;
+  }
+
+private:
+  /** Reduces the working vector by the rows; returns its leading bit (-1: zero). */
+  long
+  reduce()
+  {
+    for (;;) {
+      long h = -1;
+      for (std::size_t w = words_; w-- > 0;)
+        if (scratch_[w]) {
+          h = static_cast<long>(w * 64 + 63 - __builtin_clzll(scratch_[w]));
+          break;
+        }
+      if (h < 0 || lead_row_[h] < 0)
+        return h;
+      const std::uint64_t* row = rows_.data() + lead_row_[h] * words_;
+      for (std::size_t w = 0; w < words_; ++w)
+        scratch_[w] ^= row[w];
+    }
+  }
+
+  std::size_t words_ = 0;
+  std::vector<std::uint64_t> rows_;
+  std::vector<long> lead_row_;
+  std::vector<std::uint64_t> scratch_;
 };
 
 struct Settings
@@ -163,6 +262,7 @@ struct Settings
   double boundary_weight;
   bool prevent_inversion;
   bool preserve_cavities;
+  unsigned threads;
 };
 
 /** The dynamic simplicial 2-complex being simplified. Vertex ids: kept input spheres first (in
@@ -191,11 +291,12 @@ private:
   }
   int other(int e, int v) const { return e_v_[e][0] == v ? e_v_[e][1] : e_v_[e][0]; }
 
-  void buildQuadrics(const MedialMesh& mat);
+  void buildQuadrics();
   CollapseChoice evaluate(int e) const;
   QueueKey keyOf(int e, const CollapseChoice& c) const
   {
-    return {c.cost, std::min(e_v_[e][0], e_v_[e][1]), std::max(e_v_[e][0], e_v_[e][1]), c.tier};
+    const int ra = output_rank_[e_v_[e][0]], rb = output_rank_[e_v_[e][1]];
+    return {c.cost, std::min(ra, rb), std::max(ra, rb), c.tier};
   }
   Eigen::Vector3d faceNormal(int f) const;
   bool linkCondition(int e);
@@ -211,6 +312,7 @@ private:
   double scale_;
 
   // vertices
+  std::vector<int> output_rank_; ///< position in the output order (input order, then merges)
   std::vector<Eigen::Vector4d> sphere_;
   struct Quadrics
   {
@@ -223,13 +325,16 @@ private:
   std::vector<std::uint32_t> mark_;
   std::uint32_t stamp_ = 0;
   // edges
+  std::vector<int> e_orig_; ///< input index of each edge
   std::vector<std::array<int, 2>> e_v_;
   std::vector<char> e_alive_, e_blocked_;
   std::vector<std::size_t> e_evaluated_; ///< collapse count when the edge's key was computed
   std::vector<Eigen::Vector4d> e_target_; ///< the sphere chosen then
   std::vector<std::array<int, 4>> e_blockers_; ///< CollapseChoice::blockers then
+  std::vector<double> e_bound_;                ///< CollapseChoice::bound then
   std::vector<std::size_t> v_touched_;   ///< collapse count when a triangle around it changed
   // faces
+  std::vector<int> f_orig_; ///< input index of each triangle
   std::vector<std::array<int, 3>> f_v_;
   std::vector<Eigen::Vector3d> f_normal_; ///< (p1 − p0) × (p2 − p0); zero when degenerate
   std::vector<char> f_alive_;
@@ -239,6 +344,10 @@ private:
   std::size_t collapses_ = 0;
   std::size_t penalised_ = 0;
   std::vector<int> scratch_;
+  // killedCyclesAreBoundaries() buffers, kept to avoid allocations
+  std::vector<int> scratch_bad_, scratch_patch_, scratch_faces_;
+  std::vector<std::uint64_t> scratch_keys_;
+  Gf2Span scratch_span_;
 };
 
 EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origin, double scale,
@@ -247,12 +356,27 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
 {
   const int n_in = static_cast<int>(mat.numVertices());
   // Isolated spheres cannot collapse; Q-MAT drops them (CleanIsolatedVertices).
-  std::vector<int> to_internal(n_in, -1);
-  int n = 0;
+  std::vector<int> kept;
   for (int v = 0; v < n_in; ++v)
     if (!mat.vertexEdges(v).empty())
-      to_internal[v] = n++;
+      kept.push_back(v);
+  const int n = static_cast<int>(kept.size());
   alive_count_ = static_cast<std::size_t>(n);
+
+  // Internal order: along a Morton curve, so that a collapse's neighbourhood lies on a few pages
+  // (3× faster on Voronoi MATs, whose order is that of the tetrahedra). Ties and the output keep
+  // the input order (output_rank_).
+  std::vector<std::uint64_t> code(n);
+  for (int i = 0; i < n; ++i)
+    code[i] = mortonCode((mat.centers()[kept[i]] - origin_) / scale_);
+  std::vector<int> order(n);
+  for (int i = 0; i < n; ++i)
+    order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return code[x] < code[y]; });
+  std::vector<int> to_internal(n_in, -1);
+  for (int i = 0; i < n; ++i)
+    to_internal[kept[order[i]]] = i;
+
   const std::size_t capacity = n > 0 ? 2 * static_cast<std::size_t>(n) - 1 : 0;
   sphere_.reserve(capacity);
   q_.reserve(capacity);
@@ -260,23 +384,42 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
   v_edges_.reserve(capacity);
   v_faces_.reserve(capacity);
   mark_.assign(capacity, 0);
-  for (int v = 0; v < n_in; ++v) {
-    if (to_internal[v] < 0)
-      continue;
+  output_rank_.resize(capacity);
+  for (int i = 0; i < n; ++i) {
+    const int v = kept[order[i]];
     Eigen::Vector4d s;
     s.head<3>() = (mat.centers()[v] - origin_) / scale_;
     s[3] = mat.radii()[v] / scale_;
     sphere_.push_back(s);
     v_alive_.push_back(1);
+    output_rank_[i] = order[i];
   }
+  for (std::size_t v = n; v < capacity; ++v)
+    output_rank_[v] = static_cast<int>(v); // merged spheres follow the survivors in merge order
   q_.resize(n);
   v_edges_.resize(n);
   v_faces_.resize(n);
 
+  // Edges and triangles in the order of their smallest internal corner, for the same reason.
+  auto sortedBySmallestCorner = [](std::size_t count, auto corners) {
+    std::vector<std::pair<std::array<int, 3>, int>> keyed(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      keyed[i] = {corners(i), static_cast<int>(i)};
+      std::sort(keyed[i].first.begin(), keyed[i].first.end());
+    }
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<int> ids(count);
+    for (std::size_t i = 0; i < count; ++i)
+      ids[i] = keyed[i].second;
+    return ids;
+  };
+  e_orig_ = sortedBySmallestCorner(mat.numEdges(), [&](std::size_t e) {
+    return std::array<int, 3>{to_internal[mat.edges()[e][0]], to_internal[mat.edges()[e][1]], -1};
+  });
   e_v_.reserve(mat.numEdges());
-  for (const Eigen::Vector2i& e : mat.edges()) {
+  for (int orig : e_orig_) {
     const int id = static_cast<int>(e_v_.size());
-    const int a = to_internal[e[0]], b = to_internal[e[1]];
+    const int a = to_internal[mat.edges()[orig][0]], b = to_internal[mat.edges()[orig][1]];
     e_v_.push_back({a, b});
     v_edges_[a].push_back(id);
     v_edges_[b].push_back(id);
@@ -286,11 +429,17 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
   e_evaluated_.assign(e_v_.size(), 0);
   e_target_.resize(e_v_.size());
   e_blockers_.resize(e_v_.size());
+  e_bound_.resize(e_v_.size());
   v_touched_.assign(capacity, 0);
 
+  f_orig_ = sortedBySmallestCorner(mat.numTriangles(), [&](std::size_t f) {
+    const Eigen::Vector3i& t = mat.triangles()[f];
+    return std::array<int, 3>{to_internal[t[0]], to_internal[t[1]], to_internal[t[2]]};
+  });
   f_v_.reserve(mat.numTriangles());
-  for (const Eigen::Vector3i& t : mat.triangles()) {
+  for (int orig : f_orig_) {
     const int id = static_cast<int>(f_v_.size());
+    const Eigen::Vector3i& t = mat.triangles()[orig];
     f_v_.push_back({to_internal[t[0]], to_internal[t[1]], to_internal[t[2]]});
     for (int k = 0; k < 3; ++k)
       v_faces_[to_internal[t[k]]].push_back(id);
@@ -300,12 +449,15 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
   for (std::size_t f = 0; f < f_v_.size(); ++f)
     f_normal_[f] = faceNormal(static_cast<int>(f));
 
-  buildQuadrics(mat);
+  buildQuadrics();
 
   // Every edge's first cost; independent per edge, so threads cannot change the result.
   const int num_edges = static_cast<int>(e_v_.size());
   std::vector<CollapseChoice> first(num_edges);
-#pragma omp parallel for schedule(static)
+#ifdef _OPENMP
+  const int threads = settings_.threads > 0 ? static_cast<int>(settings_.threads) : omp_get_max_threads();
+#endif
+#pragma omp parallel for schedule(static) num_threads(threads)
   for (int e = 0; e < num_edges; ++e)
     first[e] = evaluate(e);
   heap_ = EdgeHeap(e_v_.size());
@@ -313,6 +465,7 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
     heap_.set(e, keyOf(e, first[e]));
     e_target_[e] = first[e].sphere;
     e_blockers_[e] = first[e].blockers;
+    e_bound_[e] = first[e].bound;
   }
 }
 
@@ -329,7 +482,7 @@ EdgeCollapser::faceNormal(int f) const
 }
 
 void
-EdgeCollapser::buildQuadrics(const MedialMesh& mat)
+EdgeCollapser::buildQuadrics()
 {
   // Slab sides: both tangent planes of every triangle, weight 1, on all three corners.
   for (const auto& t : f_v_) {
@@ -346,12 +499,14 @@ EdgeCollapser::buildQuadrics(const MedialMesh& mat)
     q.all = q.face;
 
   // Q-MAT "PreservBoundaryMethodFour" (§8.3): weight bound_weight · 0.1 · ratio².
-  for (std::size_t me = 0; me < mat.numEdges(); ++me) {
-    const int e = static_cast<int>(me);
-    const int tri_count = mat.edgeTriangleCount(e);
+  for (std::size_t ue = 0; ue < e_v_.size(); ++ue) {
+    const int e = static_cast<int>(ue);
+    const int a = e_v_[e][0], b = e_v_[e][1];
+    int tri_count = 0;
+    for (int f : v_faces_[a])
+      tri_count += hasVertex(f, b);
     if (tri_count > 1)
       continue;
-    const int a = e_v_[e][0], b = e_v_[e][1];
     const Eigen::Vector4d& sa = sphere_[a];
     const Eigen::Vector4d& sb = sphere_[b];
     const double ratio = stabilityRatio(sa, sb);
@@ -399,10 +554,9 @@ EdgeCollapser::buildQuadrics(const MedialMesh& mat)
       }
     }
     // Branch tips (a sphere with this one edge) are held by a plane across the axis.
-    const int ia = mat.edges()[e][0], ib = mat.edges()[e][1];
-    if (mat.vertexEdges(ia).size() == 1)
+    if (v_edges_[a].size() == 1)
       q_[a].all += SphereQuadric::fromPlane(ab, sa, w);
-    if (mat.vertexEdges(ib).size() == 1)
+    if (v_edges_[b].size() == 1)
       q_[b].all += SphereQuadric::fromPlane(-ab, sb, w);
   }
 }
@@ -500,6 +654,8 @@ EdgeCollapser::evaluate(int e) const
     choice.cost = fallback_cost[best];
   }
 
+  const double ratio = stabilityRatio(sa, sb);
+  choice.bound = (std::max(0.0, choice.cost) + settings_.k) * ratio * ratio;
   if (num_tests > 0 && (choice.blockers[0] = flipped(choice.sphere)) >= 0) {
     // The intended rule (the published code inverted it, §8.4): the cheapest candidate that
     // flips nothing, else keep m* but defer the collapse to the penalty tier.
@@ -520,7 +676,6 @@ EdgeCollapser::evaluate(int e) const
     if (!found)
       choice.tier = 1;
   }
-  const double ratio = stabilityRatio(sa, sb);
   choice.cost = (std::max(0.0, choice.cost) + settings_.k) * ratio * ratio;
   return choice;
 }
@@ -667,21 +822,28 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
     v_touched_[other(e2, m)] = collapses_;
   for (int e2 : v_edges_[m])
     push(e2);
-  // Around m: blocked edges get another chance (their link may have changed), and keys that
-  // may have dropped — a triangle that made a cheaper candidate flip has changed — are
-  // refreshed now. Every other key there can only have risen (an edge's preferred sphere
-  // depends on its own quadrics alone) and is re-validated lazily when it reaches the top.
+  // Around m: blocked edges get another chance (their link may have changed). Every other key
+  // there is stale (its triangles changed: v_touched_) and re-validated when it reaches the top.
+  // That is exact for keys that can only have risen (an edge's preferred sphere depends on its
+  // own quadrics alone). A key that may have dropped — a triangle that made a cheaper
+  // candidate flip has changed — is lowered to its bound (the cost were nothing to flip), so it
+  // cannot reach the top too late.
   auto changed = [&](int f) { return f >= 0 && (!f_alive_[f] || hasVertex(f, m)); };
   for (int e2 : v_edges_[m]) {
     const int x = other(e2, m);
     for (int e3 : v_edges_[x]) {
       if (e_evaluated_[e3] == collapses_)
-        continue; // just done
-      const auto& bl = e_blockers_[e3];
-      if (e_blocked_[e3] || changed(bl[0]) || changed(bl[1]) || changed(bl[2]) ||
-          changed(bl[3])) {
+        continue; // just evaluated
+      if (e_blocked_[e3]) {
         e_blocked_[e3] = 0;
         push(e3);
+        continue;
+      }
+      const auto& bl = e_blockers_[e3];
+      if (changed(bl[0]) || changed(bl[1]) || changed(bl[2]) || changed(bl[3])) {
+        const int ra = output_rank_[e_v_[e3][0]], rb = output_rank_[e_v_[e3][1]];
+        heap_.set(e3, {e_bound_[e3], std::min(ra, rb), std::max(ra, rb), 0});
+        e_blockers_[e3] = {-1, -1, -1, -1};
       }
     }
   }
@@ -694,6 +856,7 @@ EdgeCollapser::push(int e)
   heap_.set(e, keyOf(e, c));
   e_target_[e] = c.sphere;
   e_blockers_[e] = c.blockers;
+  e_bound_[e] = c.bound;
   e_evaluated_[e] = collapses_;
 }
 
@@ -764,7 +927,8 @@ EdgeCollapser::killedCyclesAreBoundaries(int e, int rings)
     return false;
   const int a = e_v_[e][0], b = e_v_[e][1];
   // The common neighbours x without a triangle abx: the collapse kills the cycles ab+bx+xa.
-  std::vector<int> bad;
+  std::vector<int>& bad = scratch_bad_;
+  bad.clear();
   ++stamp_;
   for (int ea : v_edges_[a])
     mark_[other(ea, a)] = stamp_;
@@ -775,11 +939,26 @@ EdgeCollapser::killedCyclesAreBoundaries(int e, int rings)
   }
   if (bad.empty())
     return true;
+  // The usual disk: a cone from a vertex y over the cycle (triangles aby, bxy, axy).
+  auto coneBounds = [&](int x) {
+    for (int f : v_faces_[a]) {
+      if (!hasVertex(f, b))
+        continue;
+      const auto& t = f_v_[f];
+      const int y = t[0] != a && t[0] != b ? t[0] : (t[1] != a && t[1] != b ? t[1] : t[2]);
+      if (faceExists(b, x, y) && faceExists(a, x, y))
+        return true;
+    }
+    return false;
+  };
+  if (std::all_of(bad.begin(), bad.end(), coneBounds))
+    return true;
 
   // Local patch: vertices within \a rings edges of a or b, and the triangles among them.
   constexpr std::size_t kMaxPatchFaces = 4096;
   ++stamp_;
-  std::vector<int> patch = {a, b};
+  std::vector<int>& patch = scratch_patch_;
+  patch.assign({a, b});
   mark_[a] = mark_[b] = stamp_;
   for (int ring = 0, begin = 0; ring < rings; ++ring) {
     const int end = static_cast<int>(patch.size());
@@ -794,7 +973,8 @@ EdgeCollapser::killedCyclesAreBoundaries(int e, int rings)
     begin = end;
   }
   // Local edge numbering; the faces as GF(2) vectors over it.
-  std::vector<int> faces;
+  std::vector<int>& faces = scratch_faces_;
+  faces.clear();
   for (int v : patch)
     for (int f : v_faces_[v]) {
       const auto& t = f_v_[f];
@@ -804,61 +984,41 @@ EdgeCollapser::killedCyclesAreBoundaries(int e, int rings)
     }
   if (faces.size() > kMaxPatchFaces)
     return false; // too big to decide cheaply: stay on the safe side
-  std::vector<std::uint64_t> edge_key;
+  std::vector<std::uint64_t>& keys = scratch_keys_;
+  keys.clear();
   auto key = [](int p, int q) {
     return (static_cast<std::uint64_t>(std::min(p, q)) << 32) |
            static_cast<std::uint32_t>(std::max(p, q));
   };
   for (int f : faces)
     for (int k = 0; k < 3; ++k)
-      edge_key.push_back(key(f_v_[f][k], f_v_[f][(k + 1) % 3]));
+      keys.push_back(key(f_v_[f][k], f_v_[f][(k + 1) % 3]));
   for (int x : bad) {
-    edge_key.push_back(key(a, x));
-    edge_key.push_back(key(b, x));
+    keys.push_back(key(a, x));
+    keys.push_back(key(b, x));
   }
-  edge_key.push_back(key(a, b));
-  std::sort(edge_key.begin(), edge_key.end());
-  edge_key.erase(std::unique(edge_key.begin(), edge_key.end()), edge_key.end());
-  const std::size_t words = (edge_key.size() + 63) / 64;
+  keys.push_back(key(a, b));
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   auto bitOf = [&](int p, int q) {
-    return static_cast<std::size_t>(
-        std::lower_bound(edge_key.begin(), edge_key.end(), key(p, q)) - edge_key.begin());
+    return static_cast<std::size_t>(std::lower_bound(keys.begin(), keys.end(), key(p, q)) -
+                                    keys.begin());
   };
-  using Bits = std::vector<std::uint64_t>;
-  auto flip = [](Bits& v, std::size_t bit) { v[bit / 64] ^= std::uint64_t(1) << (bit % 64); };
-  auto highest = [](const Bits& v) -> long {
-    for (std::size_t w = v.size(); w-- > 0;)
-      if (v[w])
-        return static_cast<long>(w * 64 + 63 - __builtin_clzll(v[w]));
-    return -1;
-  };
-  // Echelon basis of the boundaries of the patch faces, keyed by leading bit.
-  std::vector<Bits> basis;
-  std::vector<long> lead_of(edge_key.size(), -1);
+  Gf2Span& span = scratch_span_;
+  span.reset(keys.size());
   for (int f : faces) {
-    Bits v(words, 0);
+    std::uint64_t* v = span.scratch();
     for (int k = 0; k < 3; ++k)
-      flip(v, bitOf(f_v_[f][k], f_v_[f][(k + 1) % 3]));
-    for (long h = highest(v); h >= 0 && lead_of[h] >= 0; h = highest(v))
-      for (std::size_t w = 0; w < words; ++w)
-        v[w] ^= basis[lead_of[h]][w];
-    const long h = highest(v);
-    if (h >= 0) {
-      lead_of[h] = static_cast<long>(basis.size());
-      basis.push_back(std::move(v));
-    }
+      Gf2Span::flip(v, bitOf(f_v_[f][k], f_v_[f][(k + 1) % 3]));
+    span.insertScratch();
   }
   for (int x : bad) {
-    Bits z(words, 0);
-    flip(z, bitOf(a, b));
-    flip(z, bitOf(b, x));
-    flip(z, bitOf(x, a));
-    for (long h = highest(z); h >= 0; h = highest(z)) {
-      if (lead_of[h] < 0)
-        return false; // not a boundary in the patch: may be a tunnel or hole
-      for (std::size_t w = 0; w < words; ++w)
-        z[w] ^= basis[lead_of[h]][w];
-    }
+    std::uint64_t* z = span.scratch();
+    Gf2Span::flip(z, bitOf(a, b));
+    Gf2Span::flip(z, bitOf(b, x));
+    Gf2Span::flip(z, bitOf(x, a));
+    if (!span.scratchInSpan())
+      return false; // not a boundary in the patch: may be a tunnel or hole
   }
   return true;
 }
@@ -866,30 +1026,48 @@ EdgeCollapser::killedCyclesAreBoundaries(int e, int rings)
 MedialMesh
 EdgeCollapser::extract() const
 {
+  // Survivors in input order, then merged spheres in merge order; edges and triangles in input
+  // order (all of them are input elements, re-pointed).
+  std::vector<int> by_rank(sphere_.size(), -1);
+  for (std::size_t v = 0; v < sphere_.size(); ++v)
+    if (v_alive_[v])
+      by_rank[output_rank_[v]] = static_cast<int>(v);
   std::vector<int> index(sphere_.size(), -1);
   std::vector<Eigen::Vector3d> centers;
   std::vector<double> radii;
   centers.reserve(alive_count_);
   radii.reserve(alive_count_);
-  for (std::size_t v = 0; v < sphere_.size(); ++v) {
-    if (!v_alive_[v])
+  for (int v : by_rank) {
+    if (v < 0)
       continue;
     index[v] = static_cast<int>(centers.size());
     centers.push_back(sphere_[v].head<3>() * scale_ + origin_);
     radii.push_back(std::max(0.0, sphere_[v][3] * scale_));
   }
-  std::vector<Eigen::Vector2i> edges;
+  std::vector<std::pair<int, Eigen::Vector2i>> edges;
   for (std::size_t e = 0; e < e_v_.size(); ++e)
     if (e_alive_[e])
-      edges.emplace_back(index[e_v_[e][0]], index[e_v_[e][1]]);
-  std::vector<Eigen::Vector3i> triangles;
+      edges.push_back({e_orig_[e], Eigen::Vector2i(index[e_v_[e][0]], index[e_v_[e][1]])});
+  std::sort(edges.begin(), edges.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<std::pair<int, Eigen::Vector3i>> triangles;
   for (std::size_t f = 0; f < f_v_.size(); ++f)
     if (f_alive_[f]) {
       std::array<int, 3> t = {index[f_v_[f][0]], index[f_v_[f][1]], index[f_v_[f][2]]};
       std::sort(t.begin(), t.end()); // Q-MAT writes ascending corners; winding means nothing
-      triangles.emplace_back(t[0], t[1], t[2]);
+      triangles.push_back({f_orig_[f], Eigen::Vector3i(t[0], t[1], t[2])});
     }
-  return MedialMesh(std::move(centers), std::move(radii), edges, triangles);
+  std::sort(triangles.begin(), triangles.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<Eigen::Vector2i> edge_list;
+  edge_list.reserve(edges.size());
+  for (const auto& e : edges)
+    edge_list.push_back(e.second);
+  std::vector<Eigen::Vector3i> triangle_list;
+  triangle_list.reserve(triangles.size());
+  for (const auto& t : triangles)
+    triangle_list.push_back(t.second);
+  return MedialMesh(std::move(centers), std::move(radii), edge_list, triangle_list);
 }
 
 } // namespace
@@ -902,6 +1080,7 @@ QmatSimplification::QmatSimplification()
 , boundary_weight_(0.1)
 , prevent_inversion_(true)
 , preserve_cavities_(false)
+, threads_(1)
 {}
 
 bool
@@ -948,7 +1127,7 @@ QmatSimplification::compute(MedialMesh& base, MedialMesh& structured)
     scale = 1.0;
 
   EdgeCollapser collapser(mat, 0.5 * (lo + hi), scale,
-                          Settings{k_, boundary_weight_, prevent_inversion_, preserve_cavities_});
+                          Settings{k_, boundary_weight_, prevent_inversion_, preserve_cavities_, threads_});
   initial_count_ = collapser.aliveCount();
   if (initial_count_ == 0) {
     PCL_ERROR("[segmat::QmatSimplification::compute] the medial mesh has no edges\n");

@@ -110,6 +110,12 @@ public:
   /** \brief Whether cavities are kept. */
   bool getPreserveCavities() const { return preserve_cavities_; }
 
+  /** \brief Threads for the first evaluation of every edge's cost (default 1; 0: OpenMP's
+   * default). The collapse loop itself is sequential; the output does not depend on it. */
+  void setNumberOfThreads(unsigned threads) { threads_ = threads; }
+  /** \brief Threads for the first cost evaluation. */
+  unsigned getNumberOfThreads() const { return threads_; }
+
   /** \brief Simplify once: snapshot at the base target, continue to the structured target.
    * \param[out] base the base MAT, in input units; survivors in input order, then merged spheres
    *             in merge order
@@ -139,6 +145,7 @@ private:
   double boundary_weight_;
   bool prevent_inversion_;
   bool preserve_cavities_;
+  unsigned threads_;
 
   std::size_t initial_count_ = 0;
   int resolved_structured_target_ = 0;
