@@ -292,7 +292,7 @@ private:
   int other(int e, int v) const { return e_v_[e][0] == v ? e_v_[e][1] : e_v_[e][0]; }
 
   void buildQuadrics();
-  CollapseChoice evaluate(int e) const;
+  CollapseChoice evaluate(int e, bool check_flips = true) const;
   QueueKey keyOf(int e, const CollapseChoice& c) const
   {
     const int ra = output_rank_[e_v_[e][0]], rb = output_rank_[e_v_[e][1]];
@@ -305,6 +305,7 @@ private:
   bool faceExists(int a, int x, int y) const;
   void collapse(int e, const Eigen::Vector4d& target);
   void push(int e);
+  void pushBound(int e);
   static void removeFrom(std::vector<int>& list, int value);
 
   Settings settings_;
@@ -332,6 +333,7 @@ private:
   std::vector<Eigen::Vector4d> e_target_; ///< the sphere chosen then
   std::vector<std::array<int, 4>> e_blockers_; ///< CollapseChoice::blockers then
   std::vector<double> e_bound_;                ///< CollapseChoice::bound then
+  std::vector<char> e_verified_; ///< key checked for flips (else it is the bound)
   std::vector<std::size_t> v_touched_;   ///< collapse count when a triangle around it changed
   // faces
   std::vector<int> f_orig_; ///< input index of each triangle
@@ -430,6 +432,7 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
   e_target_.resize(e_v_.size());
   e_blockers_.resize(e_v_.size());
   e_bound_.resize(e_v_.size());
+  e_verified_.assign(e_v_.size(), 0);
   v_touched_.assign(capacity, 0);
 
   f_orig_ = sortedBySmallestCorner(mat.numTriangles(), [&](std::size_t f) {
@@ -459,7 +462,7 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
 #endif
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (int e = 0; e < num_edges; ++e)
-    first[e] = evaluate(e);
+    first[e] = evaluate(e, false);
   heap_ = EdgeHeap(e_v_.size());
   for (int e = 0; e < num_edges; ++e) {
     heap_.set(e, keyOf(e, first[e]));
@@ -562,7 +565,7 @@ EdgeCollapser::buildQuadrics()
 }
 
 CollapseChoice
-EdgeCollapser::evaluate(int e) const
+EdgeCollapser::evaluate(int e, bool check_flips) const
 {
   const int a = e_v_[e][0], b = e_v_[e][1];
   const Eigen::Vector4d& sa = sphere_[a];
@@ -596,22 +599,31 @@ EdgeCollapser::evaluate(int e) const
     }
     ++num_tests;
   };
-  bool has_faces = false;
-  for (int v : {a, b})
-    for (int f : v_faces_[v]) {
-      const auto& t = f_v_[f];
-      const int k = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
-      const int q1 = t[(k + 1) % 3], q2 = t[(k + 2) % 3];
-      if (q1 == a || q1 == b || q2 == a || q2 == b) {
-        has_faces = true; // on ab: disappears with the collapse
-        continue;
+  bool has_faces = false; // a triangle on ab (it disappears with the collapse)
+  if (!check_flips || !settings_.prevent_inversion) {
+    for (int f : v_faces_[a])
+      if (hasVertex(f, b)) {
+        has_faces = true;
+        break;
       }
-      if (!settings_.prevent_inversion || f_normal_[f].isZero())
-        continue;
-      const Eigen::Vector3d p1 = sphere_[q1].head<3>();
-      const Eigen::Vector3d w = (sphere_[q2].head<3>() - p1).cross(f_normal_[f]);
-      addTest({p1, w, w.squaredNorm(), f});
-    }
+  }
+  else {
+    for (int v : {a, b})
+      for (int f : v_faces_[v]) {
+        const auto& t = f_v_[f];
+        const int k = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+        const int q1 = t[(k + 1) % 3], q2 = t[(k + 2) % 3];
+        if (q1 == a || q1 == b || q2 == a || q2 == b) {
+          has_faces = true;
+          continue;
+        }
+        if (f_normal_[f].isZero())
+          continue;
+        const Eigen::Vector3d p1 = sphere_[q1].head<3>();
+        const Eigen::Vector3d w = (sphere_[q2].head<3>() - p1).cross(f_normal_[f]);
+        addTest({p1, w, w.squaredNorm(), f});
+      }
+  }
   // The first triangle that m would flip, or -1.
   const FlipTest* tests = spilled.empty() ? inline_tests : spilled.data();
   auto flipped = [&](const Eigen::Vector4d& m) {
@@ -821,7 +833,7 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
   for (int e2 : v_edges_[m])
     v_touched_[other(e2, m)] = collapses_;
   for (int e2 : v_edges_[m])
-    push(e2);
+    pushBound(e2);
   // Around m: blocked edges get another chance (their link may have changed). Every other key
   // there is stale (its triangles changed: v_touched_) and re-validated when it reaches the top.
   // That is exact for keys that can only have risen (an edge's preferred sphere depends on its
@@ -836,7 +848,7 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
         continue; // just evaluated
       if (e_blocked_[e3]) {
         e_blocked_[e3] = 0;
-        push(e3);
+        pushBound(e3);
         continue;
       }
       const auto& bl = e_blockers_[e3];
@@ -844,6 +856,7 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
         const int ra = output_rank_[e_v_[e3][0]], rb = output_rank_[e_v_[e3][1]];
         heap_.set(e3, {e_bound_[e3], std::min(ra, rb), std::max(ra, rb), 0});
         e_blockers_[e3] = {-1, -1, -1, -1};
+        e_verified_[e3] = 0;
       }
     }
   }
@@ -857,6 +870,20 @@ EdgeCollapser::push(int e)
   e_target_[e] = c.sphere;
   e_blockers_[e] = c.blockers;
   e_bound_[e] = c.bound;
+  e_verified_[e] = 1;
+  e_evaluated_[e] = collapses_;
+}
+
+void
+EdgeCollapser::pushBound(int e)
+{
+  // The flip tests are most of an evaluation and most keys never reach the top: queue the
+  // bound (the cost were nothing to flip) and run them only when it does.
+  const CollapseChoice c = evaluate(e, false);
+  heap_.set(e, keyOf(e, c));
+  e_bound_[e] = c.bound;
+  e_blockers_[e] = {-1, -1, -1, -1};
+  e_verified_[e] = 0;
   e_evaluated_[e] = collapses_;
 }
 
@@ -876,8 +903,8 @@ EdgeCollapser::run(std::size_t target)
       continue;
     }
     const int a = e_v_[e][0], b = e_v_[e][1];
-    // Keys near a collapse go stale (flips, triangles on the edge): re-validate those.
-    if (std::max(v_touched_[a], v_touched_[b]) > e_evaluated_[e]) {
+    // A bound is checked for flips now; keys near a collapse go stale: re-validate those.
+    if (!e_verified_[e] || std::max(v_touched_[a], v_touched_[b]) > e_evaluated_[e]) {
       const QueueKey old = heap_.topKey();
       push(e);
       if (old < heap_.topKey() || heap_.topKey() < old || heap_.topEdge() != e)
