@@ -302,6 +302,7 @@ private:
   bool linkCondition(int e);
   bool unblockByHomology();
   bool killedCyclesAreBoundaries(int e, int rings);
+  bool cyclesBoundWithin(int a, int b, int rings);
   bool faceExists(int a, int x, int y) const;
   void collapse(int e, const Eigen::Vector4d& target);
   void push(int e);
@@ -980,7 +981,17 @@ EdgeCollapser::killedCyclesAreBoundaries(int e, int rings)
   };
   if (std::all_of(bad.begin(), bad.end(), coneBounds))
     return true;
+  // Otherwise look for a disk in growing neighbourhoods: small disks are the rule.
+  for (int r = 1; r <= rings; ++r)
+    if (cyclesBoundWithin(a, b, r))
+      return true;
+  return false;
+}
 
+bool
+EdgeCollapser::cyclesBoundWithin(int a, int b, int rings)
+{
+  const std::vector<int>& bad = scratch_bad_;
   // Local patch: vertices within \a rings edges of a or b, and the triangles among them.
   constexpr std::size_t kMaxPatchFaces = 4096;
   ++stamp_;
