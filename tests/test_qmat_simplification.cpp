@@ -1,15 +1,21 @@
 // Q-MAT simplification: the sphere quadric, the stability ratio, tangent planes, and the collapse
 // loop on medial meshes with a known answer.
 #include <segmat/geometry/medial_tangent_planes.h>
+#include <segmat/geometry/winding_number.h>
+#include <segmat/io/ma.h>
+#include <segmat/io/off.h>
+#include <segmat/medial/medial_mesh_estimation.h>
 #include <segmat/medial/qmat_simplification.h>
 #include <segmat/medial/sphere_quadric.h>
 
 #include "util/synthetic_medial.h"
+#include "util/synthetic_mesh.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
+#include <string>
 
 using namespace segmat;
 using segmat::test::bettiNumbers;
@@ -309,4 +315,120 @@ TEST(QmatSimplification, Deterministic)
       EXPECT_TRUE(m->centers()[v].allFinite());
       EXPECT_GE(m->radii()[v], 0.0);
     }
+}
+
+TEST(QmatSimplification, TeddyBaseMatToFifteenSpheres)
+{
+  // The authors' teddy base MAT (2000 spheres, 7 spurious cavities) simplified to 15 spheres,
+  // compared with their own 15-sphere structured MAT (reference-facts §1, §8.6): same topology
+  // class (one component, no loop, no cavity), every one of their spheres has one of ours within
+  // 10 % of the diagonal and vice versa, all our centres inside the surface.
+  const std::string dir = std::string(SEGMAT_DATA_DIR) + "/teddy/";
+  const auto mat = std::make_shared<const MedialMesh>(io::loadMa(dir + "teddy_mat.ma"));
+  const MedialMesh reference = io::loadMa(dir + "teddy_smat.ma");
+  const TriangleMesh surface = io::loadOff(dir + "teddy.off");
+  const double diagonal = surface.boundingBoxDiagonal();
+  ASSERT_EQ(mat->numVertices(), 2000u);
+  ASSERT_EQ(bettiNumbers(*mat).b2, 7);
+
+  QmatSimplification q;
+  q.setInputMat(mat);
+  q.setNormalisationScale(diagonal);
+  q.setBaseTarget(2000);
+  q.setStructuredTarget(15);
+  MedialMesh base, structured;
+  ASSERT_TRUE(q.compute(base, structured));
+  EXPECT_EQ(base.numVertices(), 2000u);
+  EXPECT_EQ(base.numTriangles(), mat->numTriangles()); // nothing to do at the base target
+  ASSERT_EQ(structured.numVertices(), 15u);
+  const test::Betti betti = bettiNumbers(structured);
+  EXPECT_EQ(betti.b0, 1);
+  EXPECT_EQ(betti.b1, 0);
+  EXPECT_EQ(betti.b2, 0);
+  std::size_t pure = 0;
+  for (std::size_t e = 0; e < structured.numEdges(); ++e)
+    pure += structured.isPureEdge(static_cast<int>(e));
+  EXPECT_GE(pure, 6u) << "limbs and ears should be medial cones";
+
+  const WindingNumber inside(surface);
+  for (std::size_t v = 0; v < structured.numVertices(); ++v) {
+    EXPECT_TRUE(structured.centers()[v].allFinite());
+    EXPECT_GT(structured.radii()[v], 0.0);
+    EXPECT_TRUE(inside.inside(structured.centers()[v])) << "sphere " << v;
+  }
+  auto farthestNearest = [](const MedialMesh& from, const MedialMesh& to) {
+    double worst = 0.0;
+    for (const Eigen::Vector3d& c : from.centers()) {
+      double nearest = 1e300;
+      for (const Eigen::Vector3d& d : to.centers())
+        nearest = std::min(nearest, (c - d).norm());
+      worst = std::max(worst, nearest);
+    }
+    return worst;
+  };
+  EXPECT_LT(farthestNearest(reference, structured), 0.1 * diagonal);
+  EXPECT_LT(farthestNearest(structured, reference), 0.1 * diagonal);
+
+  // The full link condition keeps the 7 cavities and cannot get anywhere near 15 spheres.
+  q.setPreserveCavities(true);
+  MedialMesh strict_base, strict_structured;
+  ASSERT_TRUE(q.compute(strict_base, strict_structured));
+  EXPECT_EQ(bettiNumbers(strict_structured).b2, 7);
+  EXPECT_GT(strict_structured.numVertices(), 15u);
+}
+
+TEST(MedialMeshEstimation, CapsuleAxisAndTorusLoop)
+{
+  // Capsule of radius 0.3 around the segment z ∈ [-1, 1]: the structured MAT lies on the axis
+  // with radii near 0.3.
+  MedialMeshEstimation estimation;
+  estimation.setInputMesh(std::make_shared<const TriangleMesh>(test::capsule(0.3, 2.0, 32, 16, 8)));
+  estimation.setBaseTarget(300);
+  estimation.setStructuredTarget(6);
+  MedialMesh base, structured;
+  ASSERT_TRUE(estimation.compute(base, structured));
+  EXPECT_GT(estimation.getInitialMat().numVertices(), 300u);
+  EXPECT_EQ(base.numVertices(), 300u);
+  ASSERT_EQ(structured.numVertices(), 6u);
+  EXPECT_EQ(estimation.getStatistics().structured_spheres, 6u);
+  double z_min = 1e9, z_max = -1e9;
+  for (std::size_t v = 0; v < structured.numVertices(); ++v) {
+    const Eigen::Vector3d& c = structured.centers()[v];
+    EXPECT_LT(c.head<2>().norm(), 0.05) << c.transpose();
+    EXPECT_NEAR(structured.radii()[v], 0.3, 0.03);
+    z_min = std::min(z_min, c.z());
+    z_max = std::max(z_max, c.z());
+  }
+  EXPECT_LT(z_min, -0.7);
+  EXPECT_GT(z_max, 0.7);
+
+  // Torus (tube radius 0.25 around the unit circle): the tunnel survives as a loop, down to the
+  // smallest one, a triangle of cones.
+  estimation.setInputMesh(std::make_shared<const TriangleMesh>(test::torus(1.0, 0.25, 32, 12)));
+  estimation.setBaseTarget(12);
+  estimation.setStructuredTarget(1);
+  ASSERT_TRUE(estimation.compute(base, structured));
+  EXPECT_EQ(bettiNumbers(base).b1, 1);
+  for (std::size_t v = 0; v < base.numVertices(); ++v) {
+    EXPECT_NEAR(base.centers()[v].head<2>().norm(), 1.0, 0.02);
+    EXPECT_NEAR(base.centers()[v].z(), 0.0, 0.01);
+    EXPECT_NEAR(base.radii()[v], 0.25, 0.015);
+  }
+  EXPECT_EQ(structured.numVertices(), 3u);
+  EXPECT_EQ(bettiNumbers(structured).b1, 1);
+}
+
+TEST(MedialMeshEstimation, BadInputFails)
+{
+  MedialMeshEstimation estimation;
+  MedialMesh base, structured;
+  EXPECT_FALSE(estimation.compute(base, structured));
+  estimation.setInputMesh(std::make_shared<const TriangleMesh>());
+  EXPECT_FALSE(estimation.compute(base, structured));
+  // An open single triangle encloses nothing.
+  estimation.setInputMesh(std::make_shared<const TriangleMesh>(
+      std::vector<Eigen::Vector3d>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+      std::vector<Eigen::Vector3i>{{0, 1, 2}}));
+  EXPECT_FALSE(estimation.compute(base, structured));
+  EXPECT_TRUE(base.empty() && structured.empty());
 }
