@@ -1,6 +1,6 @@
-// Q-MAT simplification: the sphere quadric, the stability ratio, tangent planes, and the collapse
+// Q-MAT simplification: the sphere quadric, the stability ratio, cone tangent planes, and the collapse
 // loop on medial meshes with a known answer.
-#include <segmat/geometry/medial_tangent_planes.h>
+#include <segmat/geometry/cone_tangent_plane.h>
 #include <segmat/geometry/winding_number.h>
 #include <segmat/io/ma.h>
 #include <segmat/io/off.h>
@@ -106,24 +106,6 @@ TEST(StabilityRatio, ByHand)
   EXPECT_DOUBLE_EQ(stabilityRatio({0, 0, 0, 1}, {0.1, 0, 0, 0.5}), 0.0); // nested: a spike
   EXPECT_DOUBLE_EQ(stabilityRatio({1, 1, 1, 1}, {1, 1, 1, 2}), 0.0);   // same centre
   EXPECT_DOUBLE_EQ(stabilityRatio({0, 0, 0, 2}, {0, 0, 1, 1}), 0.0);   // internally tangent
-}
-
-TEST(TangentPlanes, SlabByHand)
-{
-  // Radius grows 0.5 per unit of x: the tangent normals have n_x = −0.5, n_y = 0,
-  // n_z = ±√0.75.
-  const Eigen::Vector4d s0(0, 0, 0, 1), s1(2, 0, 0, 2), s2(0, 2, 0, 1);
-  Eigen::Vector3d np, nm;
-  ASSERT_TRUE(slabTangentPlanes(s0, s1, s2, np, nm));
-  EXPECT_TRUE(np.isApprox(Eigen::Vector3d(-0.5, 0, std::sqrt(0.75)), 1e-14)) << np.transpose();
-  EXPECT_TRUE(nm.isApprox(Eigen::Vector3d(-0.5, 0, -std::sqrt(0.75)), 1e-14)) << nm.transpose();
-  // Equal radii: the planes z = ±r.
-  ASSERT_TRUE(slabTangentPlanes({0, 0, 0, 0.3}, {1, 0, 0, 0.3}, {0, 1, 0, 0.3}, np, nm));
-  EXPECT_TRUE(np.isApprox(Eigen::Vector3d(0, 0, 1), 1e-14));
-  EXPECT_TRUE(nm.isApprox(Eigen::Vector3d(0, 0, -1), 1e-14));
-  // Collinear centres and a sphere swallowing the tangent cone have no slab.
-  EXPECT_FALSE(slabTangentPlanes({0, 0, 0, 1}, {1, 0, 0, 1}, {2, 0, 0, 1}, np, nm));
-  EXPECT_FALSE(slabTangentPlanes({0, 0, 0, 0.1}, {1, 0, 0, 0.1}, {0, 0.1, 0, 5}, np, nm));
 }
 
 TEST(TangentPlanes, ConeAllAround)

@@ -2,7 +2,8 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  */
-#include <segmat/geometry/medial_tangent_planes.h>
+#include <segmat/geometry/cone_tangent_plane.h>
+#include <segmat/geometry/medial_primitives.h>
 #include <segmat/medial/qmat_simplification.h>
 #include <segmat/medial/sphere_quadric.h>
 
@@ -489,13 +490,17 @@ void
 EdgeCollapser::buildQuadrics()
 {
   // Slab sides: both tangent planes of every triangle, weight 1, on all three corners.
-  for (const auto& t : f_v_) {
-    Eigen::Vector3d n_plus, n_minus;
-    if (!slabTangentPlanes(sphere_[t[0]], sphere_[t[1]], sphere_[t[2]], n_plus, n_minus))
+  for (std::size_t f = 0; f < f_v_.size(); ++f) {
+    const auto& t = f_v_[f];
+    const Eigen::Vector3d c[3] = {sphere_[t[0]].head<3>(), sphere_[t[1]].head<3>(),
+                                  sphere_[t[2]].head<3>()};
+    const double r[3] = {sphere_[t[0]][3], sphere_[t[1]][3], sphere_[t[2]][3]};
+    SlabSides sides;
+    if (!computeSlabSides(c, r, f_normal_[f], sides))
       continue;
     // Both planes touch all three spheres, so any corner defines them.
-    const SphereQuadric q = SphereQuadric::fromPlane(n_plus, sphere_[t[0]]) +
-                            SphereQuadric::fromPlane(n_minus, sphere_[t[0]]);
+    const SphereQuadric q = SphereQuadric::fromPlane(sides.normal[0], sphere_[t[0]]) +
+                            SphereQuadric::fromPlane(sides.normal[1], sphere_[t[0]]);
     for (int k = 0; k < 3; ++k)
       q_[t[k]].face += q;
   }
