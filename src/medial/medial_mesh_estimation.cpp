@@ -43,7 +43,7 @@ MedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
 
   QmatSimplification qmat;
   qmat.setInputMat(initial_);
-  qmat.setNormalisationScale(mesh_->boundingBoxDiagonal());
+  qmat.setInputSurface(mesh_); // normalisation by its diagonal; merged centres stay inside
   qmat.setBaseTarget(simplification_base_target_);
   qmat.setStructuredTarget(simplification_structured_target_);
   qmat.setNumberOfThreads(voronoi_.getNumberOfThreads());

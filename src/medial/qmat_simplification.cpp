@@ -4,6 +4,7 @@
  */
 #include <segmat/geometry/cone_tangent_plane.h>
 #include <segmat/geometry/medial_primitives.h>
+#include <segmat/geometry/winding_number.h>
 #include <segmat/medial/qmat_simplification.h>
 #include <segmat/medial/sphere_quadric.h>
 
@@ -14,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #ifdef _OPENMP
@@ -161,7 +163,18 @@ struct CollapseChoice
   /// key cannot drop; once one changes, it may, but not below \a bound.
   std::array<int, 4> blockers = {-1, -1, -1, -1};
   double bound = 0.0; ///< the cost were nothing to flip: a lower bound of every later cost
+  std::uint8_t candidate = 0; ///< which sphere: kOptimum, kFirstEnd, kSecondEnd or kMidpoint
 };
+
+enum Candidate : std::uint8_t
+{
+  kOptimum = 0,
+  kFirstEnd = 1,
+  kSecondEnd = 2,
+  kMidpoint = 3,
+};
+/// Bits of EdgeCollapser::e_outside_: candidates found outside the surface.
+constexpr std::uint8_t kOptimumOutside = 1, kMidpointOutside = 2;
 
 /** Morton (Z-order) code of a point of the normalised box [-1, 1]³, 21 bits per axis. */
 std::uint64_t
@@ -271,8 +284,9 @@ struct Settings
 class EdgeCollapser
 {
 public:
+  /** \a inside: optional surface whose inside merged centres must stay in (not owned). */
   EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origin, double scale,
-                const Settings& settings);
+                const Settings& settings, const WindingNumber* inside);
 
   std::size_t aliveCount() const { return alive_count_; }
   std::size_t collapses() const { return collapses_; }
@@ -305,6 +319,7 @@ private:
   bool killedCyclesAreBoundaries(int e, int rings);
   bool cyclesBoundWithin(int a, int b, int rings);
   bool faceExists(int a, int x, int y) const;
+  bool insideSurface(int from, const Eigen::Vector4d& sphere) const;
   void collapse(int e, const Eigen::Vector4d& target);
   void push(int e);
   void pushBound(int e);
@@ -313,6 +328,7 @@ private:
   Settings settings_;
   Eigen::Vector3d origin_;
   double scale_;
+  const WindingNumber* inside_; ///< optional surface (input units)
 
   // vertices
   std::vector<int> output_rank_; ///< position in the output order (input order, then merges)
@@ -336,6 +352,8 @@ private:
   std::vector<std::array<int, 4>> e_blockers_; ///< CollapseChoice::blockers then
   std::vector<double> e_bound_;                ///< CollapseChoice::bound then
   std::vector<char> e_verified_; ///< key checked for flips (else it is the bound)
+  std::vector<std::uint8_t> e_candidate_; ///< CollapseChoice::candidate of the key
+  std::vector<std::uint8_t> e_outside_;   ///< kOptimumOutside | kMidpointOutside
   std::vector<std::size_t> v_touched_;   ///< collapse count when a triangle around it changed
   // faces
   std::vector<int> f_orig_; ///< input index of each triangle
@@ -355,8 +373,8 @@ private:
 };
 
 EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origin, double scale,
-                             const Settings& settings)
-: settings_(settings), origin_(origin), scale_(scale)
+                             const Settings& settings, const WindingNumber* inside)
+: settings_(settings), origin_(origin), scale_(scale), inside_(inside)
 {
   const int n_in = static_cast<int>(mat.numVertices());
   // Isolated spheres cannot collapse; Q-MAT drops them (CleanIsolatedVertices).
@@ -435,6 +453,8 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
   e_blockers_.resize(e_v_.size());
   e_bound_.resize(e_v_.size());
   e_verified_.assign(e_v_.size(), 0);
+  e_candidate_.assign(e_v_.size(), kOptimum);
+  e_outside_.assign(e_v_.size(), 0);
   v_touched_.assign(capacity, 0);
 
   f_orig_ = sortedBySmallestCorner(mat.numTriangles(), [&](std::size_t f) {
@@ -646,30 +666,48 @@ EdgeCollapser::evaluate(int e, bool check_flips) const
 
   const Eigen::Vector4d mid = 0.5 * (sa + sb);
   const Eigen::Vector4d* fallback[3] = {&sa, &sb, &mid};
+  const std::uint8_t fallback_id[3] = {kFirstEnd, kSecondEnd, kMidpoint};
+  // A midpoint found outside the surface is no candidate (the ends are inside by induction).
+  const int num_fallbacks = (e_outside_[e] & kMidpointOutside) ? 2 : 3;
   double fallback_cost[3] = {-1.0, -1.0, -1.0}; // filled when needed
   auto fillFallbackCosts = [&] {
     if (fallback_cost[0] < 0.0)
       for (int i = 0; i < 3; ++i)
         fallback_cost[i] = std::max(0.0, q(*fallback[i]));
   };
+  auto takeFallback = [&](CollapseChoice& c, int i) {
+    c.sphere = *fallback[i];
+    c.cost = fallback_cost[i];
+    c.candidate = fallback_id[i];
+  };
+  auto cheapestFallback = [&] {
+    fillFallbackCosts();
+    int best = 0;
+    for (int i = 1; i < num_fallbacks; ++i)
+      if (fallback_cost[i] < fallback_cost[best])
+        best = i;
+    return best;
+  };
 
   CollapseChoice choice;
   if (!has_faces || (q_[a].face + q_[b].face).invertible()) {
-    // §8.4 case 1: the optimal sphere m* = A⁻¹b; the midpoint when singular or r < 0.
-    if (!q.minimiser(choice.sphere) || !(choice.sphere[3] >= 0.0))
-      choice.sphere = mid;
+    // §8.4 case 1: the optimal sphere m* = A⁻¹b; the midpoint when singular or r < 0 (or, with
+    // a surface, outside it).
+    if ((e_outside_[e] & kOptimumOutside) || !q.minimiser(choice.sphere) ||
+        !(choice.sphere[3] >= 0.0)) {
+      if (num_fallbacks == 3) {
+        choice.sphere = mid;
+        choice.candidate = kMidpoint;
+      }
+      else
+        takeFallback(choice, cheapestFallback());
+    }
     choice.cost = q(choice.sphere);
   }
   else {
     // §8.4 case 2 (flat or degenerate slabs): the cheapest of the endpoints and the midpoint,
     // scored with the border terms (the published code dropped them here).
-    fillFallbackCosts();
-    int best = 0;
-    for (int i = 1; i < 3; ++i)
-      if (fallback_cost[i] < fallback_cost[best])
-        best = i;
-    choice.sphere = *fallback[best];
-    choice.cost = fallback_cost[best];
+    takeFallback(choice, cheapestFallback());
   }
 
   const double ratio = stabilityRatio(sa, sb);
@@ -679,15 +717,14 @@ EdgeCollapser::evaluate(int e, bool check_flips) const
     // flips nothing, else keep m* but defer the collapse to the penalty tier.
     fillFallbackCosts();
     int order[3] = {0, 1, 2};
-    std::stable_sort(order, order + 3,
+    std::stable_sort(order, order + num_fallbacks,
                      [&](int i, int j) { return fallback_cost[i] < fallback_cost[j]; });
     bool found = false;
-    for (int k = 0; k < 3 && !found; ++k) {
+    for (int k = 0; k < num_fallbacks && !found; ++k) {
       const int i = order[k];
       choice.blockers[k + 1] = flipped(*fallback[i]);
       if (choice.blockers[k + 1] < 0) {
-        choice.sphere = *fallback[i];
-        choice.cost = fallback_cost[i];
+        takeFallback(choice, i);
         found = true;
       }
     }
@@ -696,6 +733,19 @@ EdgeCollapser::evaluate(int e, bool check_flips) const
   }
   choice.cost = (std::max(0.0, choice.cost) + settings_.k) * ratio * ratio;
   return choice;
+}
+
+bool
+EdgeCollapser::insideSurface(int from, const Eigen::Vector4d& sphere) const
+{
+  // Sphere centres are inside (the input's by assumption, merged ones by this test), so for a
+  // closed surface counting the faces crossed on the way from one is enough: O(log F).
+  const Eigen::Vector3d start = sphere_[from].head<3>() * scale_ + origin_;
+  const Eigen::Vector3d end = sphere.head<3>() * scale_ + origin_;
+  int change = 0;
+  if (inside_->windingNumberChange(start, end, change))
+    return 1 + change > 0;
+  return inside_->inside(end);
 }
 
 bool
@@ -823,6 +873,7 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
       mark_[x] = stamp_;
       e_v_[e2] = {x, m};
       e_blocked_[e2] = 0;
+      e_outside_[e2] = 0;
       m_edges.push_back(e2);
     }
 
@@ -874,6 +925,7 @@ EdgeCollapser::push(int e)
   const CollapseChoice c = evaluate(e);
   heap_.set(e, keyOf(e, c));
   e_target_[e] = c.sphere;
+  e_candidate_[e] = c.candidate;
   e_blockers_[e] = c.blockers;
   e_bound_[e] = c.bound;
   e_verified_[e] = 1;
@@ -916,6 +968,15 @@ EdgeCollapser::run(std::size_t target)
       if (old < heap_.topKey() || heap_.topKey() < old || heap_.topEdge() != e)
         continue;
     }
+    // With a surface: a new centre (m* or the midpoint) must stay inside it; if not, that
+    // candidate is dropped for this edge and the key recomputed.
+    const std::uint8_t candidate = e_candidate_[e];
+    if (inside_ && (candidate == kOptimum || candidate == kMidpoint) &&
+        !insideSurface(a, e_target_[e])) {
+      e_outside_[e] |= candidate == kOptimum ? kOptimumOutside : kMidpointOutside;
+      push(e);
+      continue;
+    }
     penalised_ += heap_.topKey().tier;
     heap_.erase(e);
     collapse(e, e_target_[e]);
@@ -936,10 +997,17 @@ EdgeCollapser::unblockByHomology()
     CollapseChoice choice;
   };
   std::vector<Candidate> blocked;
-  for (std::size_t e = 0; e < e_v_.size(); ++e)
-    if (e_alive_[e]) {
-      const CollapseChoice c = evaluate(static_cast<int>(e));
-      blocked.push_back({keyOf(static_cast<int>(e), c), static_cast<int>(e), c});
+  for (std::size_t ue = 0; ue < e_v_.size(); ++ue)
+    if (e_alive_[ue]) {
+      const int e = static_cast<int>(ue);
+      CollapseChoice c = evaluate(e);
+      // Same surface rule as in run(): at most two rounds, the ends are inside.
+      while (inside_ && (c.candidate == kOptimum || c.candidate == kMidpoint) &&
+             !insideSurface(e_v_[e][0], c.sphere)) {
+        e_outside_[e] |= c.candidate == kOptimum ? kOptimumOutside : kMidpointOutside;
+        c = evaluate(e);
+      }
+      blocked.push_back({keyOf(e, c), e, c});
     }
   std::sort(blocked.begin(), blocked.end(),
             [](const Candidate& x, const Candidate& y) { return x.key < y.key; });
@@ -1164,13 +1232,19 @@ QmatSimplification::compute(MedialMesh& base, MedialMesh& structured)
     hi = hi.cwiseMax(c);
   }
   double scale = normalisation_scale_;
+  if ((!(scale > 0.0) || !std::isfinite(scale)) && surface_)
+    scale = surface_->boundingBoxDiagonal();
   if (!(scale > 0.0) || !std::isfinite(scale))
     scale = (hi - lo).norm();
   if (!(scale > 0.0))
     scale = 1.0;
 
+  std::unique_ptr<WindingNumber> inside;
+  if (surface_ && !surface_->empty())
+    inside = std::make_unique<WindingNumber>(*surface_);
   EdgeCollapser collapser(mat, 0.5 * (lo + hi), scale,
-                          Settings{k_, boundary_weight_, prevent_inversion_, preserve_cavities_, threads_});
+                          Settings{k_, boundary_weight_, prevent_inversion_, preserve_cavities_, threads_},
+                          inside.get());
   initial_count_ = collapser.aliveCount();
   if (initial_count_ == 0) {
     PCL_ERROR("[segmat::QmatSimplification::compute] the medial mesh has no edges\n");

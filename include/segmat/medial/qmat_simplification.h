@@ -5,6 +5,7 @@
 #pragma once
 
 #include <segmat/geometry/medial_mesh.h>
+#include <segmat/geometry/triangle_mesh.h>
 
 #include <cstddef>
 #include <memory>
@@ -66,9 +67,23 @@ public:
   /** \brief The medial mesh to simplify. */
   MedialMesh::ConstPtr getInputMat() const { return input_; }
 
+  /** \brief The surface the MAT was computed from (optional).
+   *
+   * When set, its bounding-box diagonal is the normalisation scale (unless
+   * setNormalisationScale() got a positive value), and merged spheres stay inside it: a new centre
+   * (m* or the midpoint) whose generalised winding number is <= 0.5 is rejected for that edge
+   * like a flipping one, and the edge's next candidate is used. The test counts the faces
+   * crossed between the new centre and a merged sphere's centre (the input centres are assumed
+   * inside, as VoronoiMat makes them), O(log F); without it, Q-MAT can move spheres of thin
+   * parts outside the shape.
+   */
+  void setInputSurface(const TriangleMesh::ConstPtr& surface) { surface_ = surface; }
+  /** \brief The surface (may be null). */
+  const TriangleMesh::ConstPtr& getInputSurface() const { return surface_; }
+
   /** \brief Length by which centres and radii are divided while simplifying (Q-MAT: the surface
-   * mesh's bounding-box diagonal). \param[in] scale > 0, or <= 0 to use the diagonal of the
-   * bounding box of the MAT centres. */
+   * mesh's bounding-box diagonal). \param[in] scale > 0, or <= 0 to use the surface's diagonal
+   * when a surface is set, else the diagonal of the bounding box of the MAT centres. */
   void setNormalisationScale(double scale) { normalisation_scale_ = scale; }
   /** \brief Normalisation length (<= 0: MAT centres' diagonal). */
   double getNormalisationScale() const { return normalisation_scale_; }
@@ -138,6 +153,7 @@ public:
 
 private:
   MedialMesh::ConstPtr input_;
+  TriangleMesh::ConstPtr surface_;
   double normalisation_scale_;
   int base_target_;
   int structured_target_;
