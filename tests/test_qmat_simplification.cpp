@@ -290,6 +290,16 @@ TEST(QmatSimplification, Deterministic)
   auto second = simplify(wavy, 60, 8);
   EXPECT_TRUE(sameMat(first.first, second.first));
   EXPECT_TRUE(sameMat(first.second, second.second));
+  // The first cost evaluation runs on several threads when asked; the result must not change.
+  QmatSimplification threaded;
+  threaded.setInputMat(share(wavy));
+  threaded.setBaseTarget(60);
+  threaded.setStructuredTarget(8);
+  threaded.setNumberOfThreads(3);
+  MedialMesh b3, s3;
+  ASSERT_TRUE(threaded.compute(b3, s3));
+  EXPECT_TRUE(sameMat(first.first, b3));
+  EXPECT_TRUE(sameMat(first.second, s3));
   EXPECT_EQ(first.first.numVertices(), 60u);
   EXPECT_EQ(bettiNumbers(first.second).b1, 1);
   for (const MedialMesh* m : {&first.first, &first.second})

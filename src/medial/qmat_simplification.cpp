@@ -955,11 +955,6 @@ EdgeCollapser::run(std::size_t target)
       break;
     }
     const int e = heap_.topEdge();
-    if (!linkCondition(e) && !killedCyclesAreBoundaries(e, kPopPatchRings)) {
-      heap_.erase(e);
-      e_blocked_[e] = 1; // retried when its neighbourhood changes
-      continue;
-    }
     const int a = e_v_[e][0], b = e_v_[e][1];
     // A bound is checked for flips now; keys near a collapse go stale: re-validate those.
     if (!e_verified_[e] || std::max(v_touched_[a], v_touched_[b]) > e_evaluated_[e]) {
@@ -975,6 +970,12 @@ EdgeCollapser::run(std::size_t target)
         !insideSurface(a, e_target_[e])) {
       e_outside_[e] |= candidate == kOptimum ? kOptimumOutside : kMidpointOutside;
       push(e);
+      continue;
+    }
+    // Topology last: it is the dearest test, and only a collapse about to happen needs it.
+    if (!linkCondition(e) && !killedCyclesAreBoundaries(e, kPopPatchRings)) {
+      heap_.erase(e);
+      e_blocked_[e] = 1; // retried when its neighbourhood changes
       continue;
     }
     penalised_ += heap_.topKey().tier;
