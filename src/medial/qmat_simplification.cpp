@@ -176,27 +176,6 @@ enum Candidate : std::uint8_t
 /// Bits of EdgeCollapser::e_outside_: candidates found outside the surface.
 constexpr std::uint8_t kOptimumOutside = 1, kMidpointOutside = 2;
 
-/** Morton (Z-order) code of a point of the normalised box [-1, 1]³, 21 bits per axis. */
-std::uint64_t
-mortonCode(const Eigen::Vector3d& p)
-{
-  auto spread = [](std::uint64_t x) {
-    x &= 0x1fffff;
-    x = (x | x << 32) & 0x1f00000000ffffULL;
-    x = (x | x << 16) & 0x1f0000ff0000ffULL;
-    x = (x | x << 8) & 0x100f00f00f00f00fULL;
-    x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
-    x = (x | x << 2) & 0x1249249249249249ULL;
-    return x;
-  };
-  std::uint64_t code = 0;
-  for (int k = 0; k < 3; ++k) {
-    const double t = std::min(1.0, std::max(0.0, 0.5 * (p[k] + 1.0)));
-    code |= spread(static_cast<std::uint64_t>(t * 2097151.0)) << k;
-  }
-  return code;
-}
-
 /** Incremental span of GF(2) vectors (echelon form keyed by leading bit), flat storage. Used to
  * decide whether a cycle is a sum of triangle boundaries (a mod-2 boundary). */
 class Gf2Span
@@ -385,16 +364,33 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
   const int n = static_cast<int>(kept.size());
   alive_count_ = static_cast<std::size_t>(n);
 
-  // Internal order: along a Morton curve, so that a collapse's neighbourhood lies on a few pages
-  // (3× faster on Voronoi MATs, whose order is that of the tetrahedra). Ties and the output keep
-  // the input order (output_rank_).
-  std::vector<std::uint64_t> code(n);
+  // Internal order: breadth-first along the edges (as reverse Cuthill–McKee orders a sparse
+  // matrix), so that a collapse's neighbourhood is close in memory; about 10 % faster on Voronoi
+  // MATs, whose own order is that of the tetrahedra. Ties and the output keep the input order
+  // (output_rank_).
+  std::vector<int> kept_index(n_in, -1);
   for (int i = 0; i < n; ++i)
-    code[i] = mortonCode((mat.centers()[kept[i]] - origin_) / scale_);
-  std::vector<int> order(n);
-  for (int i = 0; i < n; ++i)
-    order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return code[x] < code[y]; });
+    kept_index[kept[i]] = i;
+  std::vector<int> order;
+  order.reserve(n);
+  std::vector<char> seen(n, 0);
+  for (int start = 0; start < n; ++start) {
+    if (seen[start])
+      continue;
+    seen[start] = 1;
+    std::size_t tail = order.size();
+    order.push_back(start);
+    for (; tail < order.size(); ++tail) {
+      const int v = kept[order[tail]];
+      for (int e : mat.vertexEdges(v)) {
+        const int k = kept_index[mat.edges()[e][0] == v ? mat.edges()[e][1] : mat.edges()[e][0]];
+        if (!seen[k]) {
+          seen[k] = 1;
+          order.push_back(k);
+        }
+      }
+    }
+  }
   std::vector<int> to_internal(n_in, -1);
   for (int i = 0; i < n; ++i)
     to_internal[kept[order[i]]] = i;
