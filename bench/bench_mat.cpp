@@ -8,6 +8,9 @@
 // initial step and of the simplification — CPU seconds of this process (single thread; steadier
 // than wall time on a shared machine) and wall seconds — then the median and maximum over the
 // shapes. Runs single-threaded unless OMP_NUM_THREADS is set.
+#include "bench_common.h"
+#include "bench_args.h"
+
 #include <segmat/common/error.h>
 #include <segmat/io/mesh.h>
 #include <segmat/medial/qmat_simplification.h>
@@ -22,19 +25,8 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
 
 namespace {
-
-double
-median(std::vector<double> v)
-{
-  if (v.empty())
-    return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 double
 cpuSeconds()
@@ -67,40 +59,25 @@ timeIt(F&& work)
 
 } // namespace
 
+using segmat::bench::median;
+
 int
 main(int argc, char** argv)
 {
-  if (!std::getenv("OMP_NUM_THREADS")) { // OpenMP reads it at load time: restart with it set
-    setenv("OMP_NUM_THREADS", "1", 1);
-    execv("/proc/self/exe", argv);
-  }
+  segmat::bench::restartSingleThreaded(argv);
   int runs = 3, base_target = 2000, structured_target = -1;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    auto value = [&]() -> int {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "missing value after %s\n", arg.c_str());
-        std::exit(2);
-      }
-      return std::atoi(argv[++i]);
-    };
+    auto value = [&] { return segmat::bench::intArgument(argc, argv, i); };
     if (arg == "--runs")
       runs = std::max(1, value());
     else if (arg == "--base")
       base_target = value();
     else if (arg == "--struct")
       structured_target = value();
-    else if (std::filesystem::is_directory(arg)) {
-      std::vector<std::string> found;
-      for (const auto& entry : std::filesystem::directory_iterator(arg))
-        if (entry.is_regular_file())
-          found.push_back(entry.path().string());
-      std::sort(found.begin(), found.end());
-      files.insert(files.end(), found.begin(), found.end());
-    }
     else
-      files.push_back(arg);
+      segmat::bench::appendPaths(arg, files);
   }
   if (files.empty()) {
     std::fprintf(stderr, "usage: bench_mat [--runs N] [--base N] [--struct N] PATH...\n");
@@ -111,14 +88,9 @@ main(int argc, char** argv)
               "spheres", "edges", "init_cpu", "init_wl", "qmat_cpu", "qmat_wl", "base", "struct");
   std::vector<double> init_cpu, qmat_cpu, total_cpu, spheres;
   for (const std::string& path : files) {
-    segmat::TriangleMesh::Ptr mesh;
-    try {
-      mesh = std::make_shared<segmat::TriangleMesh>(segmat::io::loadMesh(path));
-    }
-    catch (const segmat::Error& e) {
-      std::fprintf(stderr, "skipped: %s\n", e.what());
+    const segmat::TriangleMesh::Ptr mesh = segmat::bench::loadMeshOrSkip(path);
+    if (!mesh)
       continue;
-    }
     std::vector<double> ic, iw, qc, qw;
     auto initial = std::make_shared<segmat::MedialMesh>();
     segmat::MedialMesh base, structured;

@@ -27,6 +27,7 @@
 //    a non-finite centre or radius.
 // The summary gives the mean and the maximum of each column over the shapes.
 #include "bench_common.h"
+#include "bench_args.h"
 
 #include <segmat/common/error.h>
 #include <segmat/geometry/mesh_distance.h>
@@ -152,13 +153,7 @@ main(int argc, char** argv)
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    auto value = [&]() -> int {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "missing value after %s\n", arg.c_str());
-        std::exit(2);
-      }
-      return std::atoi(argv[++i]);
-    };
+    auto value = [&] { return segmat::bench::intArgument(argc, argv, i); };
     if (arg == "--samples")
       num_samples = std::max(1, value());
     else if (arg == "--base")
@@ -174,16 +169,8 @@ main(int argc, char** argv)
       }
       given_mat = argv[++i];
     }
-    else if (std::filesystem::is_directory(arg)) {
-      std::vector<std::string> found;
-      for (const auto& entry : std::filesystem::directory_iterator(arg))
-        if (entry.is_regular_file())
-          found.push_back(entry.path().string());
-      std::sort(found.begin(), found.end());
-      files.insert(files.end(), found.begin(), found.end());
-    }
     else
-      files.push_back(arg);
+      segmat::bench::appendPaths(arg, files);
   }
   if (files.empty()) {
     std::fprintf(stderr,
@@ -197,14 +184,9 @@ main(int argc, char** argv)
   std::vector<double> col_sm_mean, col_sm_max, col_ms_mean, col_ms_max, col_h;
   std::size_t total_out = 0, total_nan = 0, total_spheres = 0;
   for (const std::string& path : files) {
-    segmat::TriangleMesh::Ptr mesh;
-    try {
-      mesh = std::make_shared<segmat::TriangleMesh>(segmat::io::loadMesh(path));
-    }
-    catch (const segmat::Error& e) {
-      std::fprintf(stderr, "skipped: %s\n", e.what());
+    const segmat::TriangleMesh::Ptr mesh = segmat::bench::loadMeshOrSkip(path);
+    if (!mesh)
       continue;
-    }
     segmat::MedialMesh base, structured;
     if (!given_mat.empty()) {
       try {
