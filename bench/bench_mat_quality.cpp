@@ -7,7 +7,8 @@
 //
 // PATH is a mesh file or a folder of meshes (e.g. ../shared/data/psb-dev/off). With --mat, the
 // given medial mesh is measured against MESH instead (e.g. the authors' data/teddy/teddy_mat.ma);
-// with --initial, the initial Voronoi MAT (before Q-MAT), to separate the two steps' errors. The MAT's volume
+// with --initial, the initial Voronoi MAT (before Q-MAT), to separate the two steps' errors.
+// The MAT's volume
 // is the union of its medial primitives: every sphere, every cone (edge: the spheres linearly
 // interpolated between its two ends) and every slab (triangle: the spheres interpolated over
 // it). It is represented by dense interpolated spheres, spaced at most h = 0.005 × the
@@ -265,7 +266,8 @@ main(int argc, char** argv)
     return 1;
   const Stats a = stats(col_sm_mean), b = stats(col_sm_max), c = stats(col_ms_mean),
               d = stats(col_ms_max), e = stats(col_h);
-  std::printf("\n%zu shapes, %% of the bounding-box diagonal (mean over shapes / max over shapes):\n",
+  std::printf("\n%zu shapes, %% of the bounding-box diagonal "
+              "(mean over shapes / max over shapes):\n",
               col_h.size());
   std::printf("  surface -> MAT   mean %.3f / %.3f   max %.3f / %.3f\n", 100 * a.mean, 100 * a.max,
               100 * b.mean, 100 * b.max);

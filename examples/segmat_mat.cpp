@@ -146,8 +146,8 @@ main(int argc, char** argv)
       std::printf("struct MAT  %zu spheres, %zu edges, %zu triangles -> %s\n",
                   structured.numVertices(), structured.numEdges(), structured.numTriangles(),
                   structured_path.c_str());
-      std::printf("total       %.3f s (save %.3f s)\n", seconds_load + st.seconds_total + seconds_save,
-                  seconds_save);
+      std::printf("total       %.3f s (save %.3f s)\n",
+                  seconds_load + st.seconds_total + seconds_save, seconds_save);
     }
     return 0;
   }

@@ -14,7 +14,8 @@ TEST(MeshDistance, ClosestPointOnTriangleRegions)
 {
   const Eigen::Vector3d a(0, 0, 0), b(2, 0, 0), c(0, 2, 0);
   // Face region: straight down.
-  EXPECT_TRUE(closestPointOnTriangle({0.5, 0.5, 3}, a, b, c).isApprox(Eigen::Vector3d(0.5, 0.5, 0)));
+  EXPECT_TRUE(
+      closestPointOnTriangle({0.5, 0.5, 3}, a, b, c).isApprox(Eigen::Vector3d(0.5, 0.5, 0)));
   // Vertex regions.
   EXPECT_EQ(closestPointOnTriangle({-1, -1, 1}, a, b, c), a);
   EXPECT_EQ(closestPointOnTriangle({3, -1, 0}, a, b, c), b);
@@ -51,10 +52,9 @@ TEST(MeshDistance, TetrahedronByHandAndAgainstBruteForce)
     double brute = 1e300;
     for (std::size_t f = 0; f < sphere.numFaces(); ++f) {
       const Eigen::Vector3i& t = sphere.faces[f];
-      brute = std::min(brute, (closestPointOnTriangle(q, sphere.vertices[t[0]],
-                                                      sphere.vertices[t[1]], sphere.vertices[t[2]]) -
-                               q)
-                                  .norm());
+      const Eigen::Vector3d c = closestPointOnTriangle(q, sphere.vertices[t[0]],
+                                                       sphere.vertices[t[1]], sphere.vertices[t[2]]);
+      brute = std::min(brute, (c - q).norm());
     }
     EXPECT_DOUBLE_EQ(tree.distance(q), brute);
   }

@@ -1,5 +1,5 @@
-// Q-MAT simplification: the sphere quadric, the stability ratio, cone tangent planes, and the collapse
-// loop on medial meshes with a known answer.
+// Q-MAT simplification: the sphere quadric, the stability ratio, cone tangent planes, and the
+// collapse loop on medial meshes with a known answer; MedialMeshEstimation on known shapes.
 #include <segmat/geometry/cone_tangent_plane.h>
 #include <segmat/geometry/winding_number.h>
 #include <segmat/io/ma.h>

@@ -476,7 +476,8 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
   const int num_edges = static_cast<int>(e_v_.size());
   std::vector<CollapseChoice> first(num_edges);
 #ifdef _OPENMP
-  const int threads = settings_.threads > 0 ? static_cast<int>(settings_.threads) : omp_get_max_threads();
+  const int threads =
+      settings_.threads > 0 ? static_cast<int>(settings_.threads) : omp_get_max_threads();
 #endif
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (int e = 0; e < num_edges; ++e)
@@ -1210,7 +1211,8 @@ QmatSimplification::compute(MedialMesh& base, MedialMesh& structured)
               base_target_, structured_target_);
     return false;
   }
-  if (!std::isfinite(k_) || k_ < 0.0 || !std::isfinite(boundary_weight_) || boundary_weight_ < 0.0) {
+  if (!(k_ >= 0.0) || !std::isfinite(k_) || !(boundary_weight_ >= 0.0) ||
+      !std::isfinite(boundary_weight_)) {
     PCL_ERROR("[segmat::QmatSimplification::compute] k and the boundary weight must be finite "
               "and >= 0\n");
     return false;
@@ -1239,9 +1241,8 @@ QmatSimplification::compute(MedialMesh& base, MedialMesh& structured)
   std::unique_ptr<WindingNumber> inside;
   if (surface_ && !surface_->empty())
     inside = std::make_unique<WindingNumber>(*surface_);
-  EdgeCollapser collapser(mat, 0.5 * (lo + hi), scale,
-                          Settings{k_, boundary_weight_, prevent_inversion_, preserve_cavities_, threads_},
-                          inside.get());
+  const Settings settings{k_, boundary_weight_, prevent_inversion_, preserve_cavities_, threads_};
+  EdgeCollapser collapser(mat, 0.5 * (lo + hi), scale, settings, inside.get());
   initial_count_ = collapser.aliveCount();
   if (initial_count_ == 0) {
     PCL_ERROR("[segmat::QmatSimplification::compute] the medial mesh has no edges\n");

@@ -16,7 +16,8 @@ constexpr double kInverseTolerance = 1e-12;
 }
 
 SphereQuadric
-SphereQuadric::fromPlane(const Eigen::Vector3d& normal, const Eigen::Vector4d& sphere, double weight)
+SphereQuadric::fromPlane(const Eigen::Vector3d& normal, const Eigen::Vector4d& sphere,
+                         double weight)
 {
   const double n[4] = {normal.x(), normal.y(), normal.z(), 1.0};
   const double nc = n[0] * sphere[0] + n[1] * sphere[1] + n[2] * sphere[2] + n[3] * sphere[3];

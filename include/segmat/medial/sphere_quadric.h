@@ -87,7 +87,8 @@ private:
   double v_[kSize] = {};
 };
 
-/** \brief Q-MAT's stability ratio of a medial edge (reference-facts §8.4, `GetRatioHyperbolicEuclid`).
+/** \brief Q-MAT's stability ratio of a medial edge (reference-facts §8.4,
+ * `GetRatioHyperbolicEuclid`).
  *
  * ratio = max(0, |c0 − c1| − |r0 − r1|) / |c0 − c1| ∈ [0, 1]: 1 for equal radii, 0 when one
  * sphere contains the other (a spike) and for coincident centres.
