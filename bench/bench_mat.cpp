@@ -1,13 +1,15 @@
 // Timing of the medial meshes SEG-MAT needs: the initial Voronoi MAT (segmat::VoronoiMat) and its
 // Q-MAT simplification to the base and structured MATs (segmat::QmatSimplification), per shape.
 //
-//   bench_mat [--runs N] [--base N] [--struct N] PATH...
+//   bench_mat [--runs N] [--base N] [--struct N] [--max-samples M] PATH...
 //
 // PATH is a mesh file or a folder of meshes (e.g. ../shared/data/psb-dev/off). For every mesh it
 // prints the face count, the initial MAT's size, the median over N runs (default 3) of the
-// initial step and of the simplification — CPU seconds of this process (single thread; steadier
+// initial step and of the simplification (with the surface set, as MedialMeshEstimation does) —
+// CPU seconds of this process (single thread; steadier
 // than wall time on a shared machine) and wall seconds — then the median and maximum over the
-// shapes. Runs single-threaded unless OMP_NUM_THREADS is set.
+// shapes. Runs single-threaded unless OMP_NUM_THREADS is set. --max-samples is VoronoiMat's
+// sample cap (default 12000; 0 = none, for larger initial MATs).
 #include "bench_common.h"
 #include "bench_args.h"
 
@@ -65,7 +67,7 @@ int
 main(int argc, char** argv)
 {
   segmat::bench::restartSingleThreaded(argv);
-  int runs = 3, base_target = 2000, structured_target = -1;
+  int runs = 3, base_target = 2000, structured_target = -1, max_samples = -1;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -76,11 +78,14 @@ main(int argc, char** argv)
       base_target = value();
     else if (arg == "--struct")
       structured_target = value();
+    else if (arg == "--max-samples")
+      max_samples = value();
     else
       segmat::bench::appendPaths(arg, files);
   }
   if (files.empty()) {
-    std::fprintf(stderr, "usage: bench_mat [--runs N] [--base N] [--struct N] PATH...\n");
+    std::fprintf(stderr,
+                 "usage: bench_mat [--runs N] [--base N] [--struct N] [--max-samples M] PATH...\n");
     return 2;
   }
 
@@ -99,6 +104,8 @@ main(int argc, char** argv)
     for (int r = 0; r < runs && ok; ++r) {
       segmat::VoronoiMat voronoi;
       voronoi.setInputMesh(mesh);
+      if (max_samples >= 0)
+        voronoi.setMaxSampleCount(static_cast<std::size_t>(max_samples));
       const Timing t = timeIt([&] { ok = voronoi.compute(*initial); });
       samples = voronoi.getStatistics().num_samples;
       ic.push_back(t.cpu);
@@ -107,7 +114,7 @@ main(int argc, char** argv)
     for (int r = 0; r < runs && ok; ++r) {
       segmat::QmatSimplification qmat;
       qmat.setInputMat(initial);
-      qmat.setNormalisationScale(mesh->boundingBoxDiagonal());
+      qmat.setInputSurface(mesh); // as MedialMeshEstimation: keeps centres inside
       qmat.setBaseTarget(base_target);
       qmat.setStructuredTarget(structured_target);
       const Timing t = timeIt([&] { ok = qmat.compute(base, structured); });
