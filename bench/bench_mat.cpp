@@ -1,15 +1,15 @@
 // Timing of the medial meshes SEG-MAT needs: the initial Voronoi MAT (segmat::VoronoiMat) and its
 // Q-MAT simplification to the base and structured MATs (segmat::QmatSimplification), per shape.
 //
-//   bench_mat [--runs N] [--base N] [--struct N] [--max-samples M] PATH...
+//   bench_mat [--runs N] [--base N] [--struct N] [--max-samples M] [--free-centres] PATH...
 //
 // PATH is a mesh file or a folder of meshes (e.g. ../shared/data/psb-dev/off). For every mesh it
 // prints the face count, the initial MAT's size, the median over N runs (default 3) of the
-// initial step and of the simplification (with the surface set, as MedialMeshEstimation does) —
-// CPU seconds of this process (single thread; steadier
-// than wall time on a shared machine) and wall seconds — then the median and maximum over the
-// shapes. Runs single-threaded unless OMP_NUM_THREADS is set. --max-samples is VoronoiMat's
-// sample cap (default 12000; 0 = none, for larger initial MATs).
+// initial step and of the simplification (with the surface set, as MedialMeshEstimation does;
+// --free-centres leaves it out): CPU seconds of this process (single thread; steadier than wall
+// time on a shared machine) and wall seconds; then the median and maximum over the shapes. Runs
+// single-threaded unless OMP_NUM_THREADS is set. --max-samples is VoronoiMat's sample cap
+// (default 12000; 0 = none, for larger initial MATs).
 #include "bench_common.h"
 #include "bench_args.h"
 
@@ -68,6 +68,7 @@ main(int argc, char** argv)
 {
   segmat::bench::restartSingleThreaded(argv);
   int runs = 3, base_target = 2000, structured_target = -1, max_samples = -1;
+  bool keep_inside = true;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -80,12 +81,15 @@ main(int argc, char** argv)
       structured_target = value();
     else if (arg == "--max-samples")
       max_samples = value();
+    else if (arg == "--free-centres")
+      keep_inside = false;
     else
       segmat::bench::appendPaths(arg, files);
   }
   if (files.empty()) {
     std::fprintf(stderr,
-                 "usage: bench_mat [--runs N] [--base N] [--struct N] [--max-samples M] PATH...\n");
+                 "usage: bench_mat [--runs N] [--base N] [--struct N] [--max-samples M] "
+                 "[--free-centres] PATH...\n");
     return 2;
   }
 
@@ -114,7 +118,10 @@ main(int argc, char** argv)
     for (int r = 0; r < runs && ok; ++r) {
       segmat::QmatSimplification qmat;
       qmat.setInputMat(initial);
-      qmat.setInputSurface(mesh); // as MedialMeshEstimation: keeps centres inside
+      if (keep_inside)
+        qmat.setInputSurface(mesh); // as MedialMeshEstimation: keeps centres inside
+      else
+        qmat.setNormalisationScale(mesh->boundingBoxDiagonal());
       qmat.setBaseTarget(base_target);
       qmat.setStructuredTarget(structured_target);
       const Timing t = timeIt([&] { ok = qmat.compute(base, structured); });

@@ -43,7 +43,10 @@ MedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
 
   QmatSimplification qmat;
   qmat.setInputMat(initial_);
-  qmat.setInputSurface(mesh_); // normalisation by its diagonal; merged centres stay inside
+  if (keep_centres_inside_)
+    qmat.setInputSurface(mesh_); // normalisation by its diagonal; merged centres stay inside
+  else
+    qmat.setNormalisationScale(mesh_->boundingBoxDiagonal()); // Q-MAT's normalisation
   qmat.setBaseTarget(simplification_base_target_);
   qmat.setStructuredTarget(simplification_structured_target_);
   qmat.setNumberOfThreads(voronoi_.getNumberOfThreads());

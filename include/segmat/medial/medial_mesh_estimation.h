@@ -81,6 +81,14 @@ public:
   /** \brief Sample jitter relative to the diagonal. */
   double getJitter() const { return voronoi_.getJitter(); }
 
+  /** \brief Keep every merged sphere centre inside the surface (default true; see
+   * QmatSimplification::setInputSurface). Costs one O(log F) face-crossing count per collapse,
+   * about 0.05–0.1 s on a 30k-face shape; without it a few centres of thin parts (9 of 76,000
+   * over the 38 PSB shapes) end up outside. */
+  void setKeepCentresInside(bool on) { keep_centres_inside_ = on; }
+  /** \brief Whether merged centres are kept inside the surface. */
+  bool getKeepCentresInside() const { return keep_centres_inside_; }
+
   /** \brief Threads for the parts that use them (VoronoiMat's inside test, Q-MAT's first cost
    * evaluation); 0 = OpenMP's default. The output does not depend on it. */
   void setNumberOfThreads(unsigned threads) { voronoi_.setNumberOfThreads(threads); }
@@ -107,6 +115,7 @@ private:
   VoronoiMat voronoi_;
   int simplification_base_target_ = 2000;
   int simplification_structured_target_ = -1;
+  bool keep_centres_inside_ = true;
   MedialMesh::Ptr initial_ = std::make_shared<MedialMesh>();
   MedialMeshEstimationStatistics statistics_;
 };
