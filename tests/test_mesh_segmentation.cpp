@@ -6,6 +6,8 @@
 #include <segmat/io/seg.h>
 #include <segmat/segmentation/mesh_segmentation.h>
 
+#include <util/label_hash.h>
+
 #include <gtest/gtest.h>
 #include <pcl/console/print.h>
 
@@ -61,18 +63,6 @@ faceCounts(const MeshSegmentation& seg)
   for (const auto& p : parts)
     counts.push_back(p.indices.size());
   return counts;
-}
-
-// FNV-1a over the labels: a compact golden value for the whole labelling.
-std::uint64_t
-labelHash(const std::vector<int>& labels)
-{
-  std::uint64_t h = 1469598103934665603ull;
-  for (int l : labels) {
-    h ^= static_cast<std::uint64_t>(l) + 1;
-    h *= 1099511628211ull;
-  }
-  return h;
 }
 
 } // namespace
@@ -140,7 +130,7 @@ TEST(MeshSegmentation, TeddyIsDeterministicAndGolden)
   ASSERT_TRUE(a.segment(lb)); // again on the same object (field reused)
   EXPECT_EQ(la, lb);
   // Golden value: update only with a deliberate change of the algorithm, saying why.
-  EXPECT_EQ(labelHash(la), 11453107484787301170ull) << "labels changed: sum " << std::accumulate(la.begin(), la.end(), 0L);
+  EXPECT_EQ(test::labelHash(la), 11453107484787301170ull) << "labels changed: sum " << std::accumulate(la.begin(), la.end(), 0L);
 }
 
 TEST(MeshSegmentation, ParametersChangeWithoutRecomputingTheField)
