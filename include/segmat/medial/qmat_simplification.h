@@ -31,25 +31,30 @@ namespace segmat {
  *    keeps the homotopy type). In a 2-complex it reads: (i) every common neighbour x of a and b
  *    spans a triangle abx, and (ii) no edge xy carries both triangles axy and bxy.
  *    Voronoi MATs are full of tiny spurious cavities and tangles of near-coincident spheres on
- *    which the strict condition blocks (the authors' teddy base MAT has 7 cavities and stops at
- *    36 spheres, with the limbs gone before the tangles). So by default only homology that
- *    matters for a solid's MAT is kept — components and tunnels/holes (mod-2 b0, b1):
- *    (ii) is waived, so a hollow tetrahedron may flatten (closes one cavity, b2 − 1), and a
- *    violation of (i) is allowed when every killed cycle ab + bx + xa bounds a 2-chain of
- *    triangles within 2 rings of a and b (4 rings once nothing else can collapse); the cycle is
- *    then null-homologous, so b1 is unchanged (b2 may grow by one and the cavity closes later).
- *    setPreserveCavities(true) enforces the full link condition instead. Blocked edges are
- *    retried whenever their neighbourhood changes;
- *  - the inversion check picks the cheapest non-flipping candidate among m*, both endpoints and
- *    the midpoint; if every candidate flips a triangle the collapse is deferred after all
- *    non-flipping ones (a penalty tier), never silently taken at its unpenalised cost;
+ *    which the strict condition blocks (the authors' teddy base MAT has 7 cavities; with the
+ *    strict rule it cannot get near 15 spheres and loses its limbs before the tangles). So by
+ *    default only the homology that matters for a solid's MAT is kept — components and
+ *    tunnels/holes (mod-2 b0, b1): (ii) is waived, so a hollow tetrahedron may flatten (closes
+ *    one cavity, b2 − 1), and a violation of (i) is allowed when every killed cycle ab + bx + xa
+ *    bounds a 2-chain of triangles near ab (first a cone from one vertex, then a GF(2) solve over
+ *    the triangles within 1, then 2 rings of a and b; 4 rings once nothing else can collapse).
+ *    Such a cycle is null-homologous, so b1 is unchanged (b2 may grow by one; that cavity closes
+ *    later). setPreserveCavities(true) enforces the full link condition instead. Blocked edges
+ *    are retried whenever their neighbourhood changes;
+ *  - the inversion check (inverted in the published code) takes the cheapest candidate among m*,
+ *    both ends and the midpoint that flips no neighbouring triangle (making one degenerate
+ *    counts as a flip); if every candidate flips one the collapse is deferred behind all others
+ *    (a penalty tier), never taken at its unpenalised cost. Flip tests run when a key reaches
+ *    the top of the queue (keys are queued as their bound: the cost were nothing to flip), and a
+ *    key a neighbouring collapse may have lowered is lowered to that bound, so the order is exact;
  *  - pure-edge boundary planes use the cone of the two spheres (four tangent planes 90° apart
  *    around the axis, weight ½ each: a rotation-symmetric quadric) instead of the published
  *    "sum instead of midpoint" third sphere that made the result depend on the origin;
  *  - when the face quadric is singular the endpoint/midpoint candidates are scored with the
  *    boundary terms included (the published code drops them there, so flat sheets lost their
  *    border);
- *  - ties are broken by the edge's endpoint indices; costs are re-validated when popped.
+ *  - with a surface (setInputSurface()) merged centres stay inside it;
+ *  - ties are broken by the edges' end indices (input order); costs are re-validated when popped.
  * Isolated spheres (no edge) are dropped on input, as Q-MAT's CleanIsolatedVertices does.
  */
 class QmatSimplification
@@ -59,7 +64,8 @@ public:
   using ConstPtr = std::shared_ptr<const QmatSimplification>;
 
   /** \brief Defaults of Q-MAT / SEG-MAT: base 2000, structured −1 (automatic), k = 1e-5,
-   * boundary weight 0.1, inversion check on, normalisation by the MAT centres' diagonal. */
+   * boundary weight 0.1, inversion check on, cavities may close, no surface (normalisation by
+   * the MAT centres' diagonal), 1 thread. */
   QmatSimplification();
 
   /** \brief The medial mesh to simplify (the initial MAT, or any MAT). */
