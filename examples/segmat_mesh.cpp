@@ -2,7 +2,8 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  *
- * segmat_mesh: segment a triangle mesh into parts with SEG-MAT, given its two medial meshes.
+ * segmat_mesh: segment a triangle mesh into parts with SEG-MAT; its two medial meshes are computed
+ * from it unless given.
  */
 #include <segmat/common/error.h>
 #include <segmat/io/colored_ply.h>
@@ -21,12 +22,16 @@
 namespace {
 
 const char* const kUsage =
-    "usage: segmat_mesh MESH -b BASE.ma -s STRUCTURED.ma -o PREFIX [-g DELTA0] [-n ETA] [--json]\n"
-    "  MESH            triangle mesh (.off, .ply, .obj)\n"
-    "  -b BASE.ma      base medial mesh (Q-MAT .ma, e.g. 2000 spheres)\n"
-    "  -s STRUCT.ma    structured medial mesh (Q-MAT .ma, e.g. 15-30 spheres)\n"
+    "usage: segmat_mesh MESH -o PREFIX [-b BASE.ma -s STRUCTURED.ma] [--save-mat] [-g DELTA0]\n"
+    "                   [-n ETA] [--threads T] [--json]\n"
+    "  MESH            closed triangle mesh (.off, .ply, .obj, .stl)\n"
     "  -o PREFIX       writes PREFIX.seg (one label per face, PSB format) and PREFIX.ply\n"
     "                  (faces coloured by part)\n"
+    "  -b BASE.ma      base medial mesh (Q-MAT .ma, e.g. 2000 spheres) } both or neither;\n"
+    "  -s STRUCT.ma    structured medial mesh (e.g. 15-30 spheres)     } default: computed\n"
+    "  --save-mat      also write the computed medial meshes to PREFIX_base.ma and\n"
+    "                  PREFIX_struct.ma\n"
+    "  --threads T     threads of the medial-mesh computation (default 1; 0 = all)\n"
     "  -g DELTA0       growing threshold (default 0.015)\n"
     "  -n ETA          minimal region, fraction of the base MAT's spheres (default 0.002)\n"
     "  --json          print one JSON object: parts, face_counts, seconds per stage\n";
@@ -56,8 +61,9 @@ int
 main(int argc, char** argv)
 {
   std::string mesh_path, base_path, structured_path, prefix;
-  bool json = false;
+  bool json = false, save_mat = false;
   segmat::MeshSegmentation segmentation;
+  segmentation.setNumberOfThreads(1);
   try {
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
@@ -90,6 +96,14 @@ main(int argc, char** argv)
       }
       else if (arg == "--json")
         json = true;
+      else if (arg == "--save-mat")
+        save_mat = true;
+      else if (arg == "--threads") {
+        const double threads = parseNumber(arg, value());
+        if (threads < 0.0 || threads > 4096.0 || threads != std::floor(threads))
+          throw segmat::Error("option --threads: give a whole number >= 0");
+        segmentation.setNumberOfThreads(static_cast<unsigned>(threads));
+      }
       else if (!arg.empty() && arg[0] == '-')
         throw segmat::Error("unknown option " + arg);
       else if (mesh_path.empty())
@@ -97,8 +111,12 @@ main(int argc, char** argv)
       else
         throw segmat::Error("unexpected argument " + arg);
     }
-    if (mesh_path.empty() || base_path.empty() || structured_path.empty() || prefix.empty())
-      throw segmat::Error("MESH, -b, -s and -o are required");
+    if (mesh_path.empty() || prefix.empty())
+      throw segmat::Error("MESH and -o are required");
+    if (base_path.empty() != structured_path.empty())
+      throw segmat::Error("give both -b and -s, or neither (the medial meshes are then computed)");
+    if (save_mat && !base_path.empty())
+      throw segmat::Error("--save-mat writes computed medial meshes: not with -b and -s");
   }
   catch (const segmat::Error& e) {
     std::cerr << "segmat_mesh: " << e.what() << "\n" << kUsage;
@@ -111,12 +129,14 @@ main(int argc, char** argv)
   segmat::MedialMesh::Ptr base, structured;
   try {
     mesh = std::make_shared<segmat::TriangleMesh>(segmat::io::loadMesh(mesh_path));
-    base = std::make_shared<segmat::MedialMesh>(segmat::io::loadMa(base_path));
-    structured = std::make_shared<segmat::MedialMesh>(segmat::io::loadMa(structured_path));
     if (mesh->empty())
       throw segmat::Error(mesh_path, 0, "the mesh has no faces");
-    if (base->empty())
-      throw segmat::Error(base_path, 0, "the base medial mesh has no spheres");
+    if (!base_path.empty()) {
+      base = std::make_shared<segmat::MedialMesh>(segmat::io::loadMa(base_path));
+      structured = std::make_shared<segmat::MedialMesh>(segmat::io::loadMa(structured_path));
+      if (base->empty())
+        throw segmat::Error(base_path, 0, "the base medial mesh has no spheres");
+    }
   }
   catch (const std::exception& e) {
     std::cerr << "segmat_mesh: " << e.what() << "\n";
@@ -126,14 +146,20 @@ main(int argc, char** argv)
 
   try {
     segmentation.setInputMesh(mesh);
-    segmentation.setBaseMat(base);
-    segmentation.setStructuredMat(structured);
+    if (base) { // otherwise segment() computes them
+      segmentation.setBaseMat(base);
+      segmentation.setStructuredMat(structured);
+    }
     std::vector<int> labels;
     if (!segmentation.segment(labels))
-      throw segmat::Error(mesh_path, 0, "segmentation failed");
+      throw segmat::Error(mesh_path, 0, "segmentation failed (see the message above)");
     secondsSince(start);
     segmat::io::saveSeg(prefix + ".seg", labels);
     segmat::io::saveColoredMeshPly(prefix + ".ply", *mesh, labels);
+    if (save_mat) {
+      segmat::io::saveMa(prefix + "_base.ma", *segmentation.getBaseMat());
+      segmat::io::saveMa(prefix + "_struct.ma", *segmentation.getStructuredMat());
+    }
     const double write_seconds = secondsSince(start);
 
     std::vector<pcl::PointIndices> parts;
@@ -144,7 +170,11 @@ main(int argc, char** argv)
     seconds.emplace_back("write", write_seconds);
 
     if (json) {
-      std::printf("{\"parts\": %zu, \"face_counts\": [", parts.size());
+      std::printf("{\"parts\": %zu, \"mat_computed\": %s, \"base_spheres\": %zu, "
+                  "\"structured_spheres\": %zu, \"face_counts\": [",
+                  parts.size(), segmentation.hasComputedMats() ? "true" : "false",
+                  segmentation.getBaseMat()->numVertices(),
+                  segmentation.getStructuredMat()->numVertices());
       for (std::size_t k = 0; k < parts.size(); ++k)
         std::printf("%s%zu", k ? ", " : "", parts[k].indices.size());
       std::printf("], \"seconds\": {");
@@ -159,7 +189,10 @@ main(int argc, char** argv)
       std::printf("\nseconds:");
       for (const auto& stage : seconds)
         std::printf(" %s %.4f", stage.first.c_str(), stage.second);
-      std::printf("\nwrote %s.seg and %s.ply\n", prefix.c_str(), prefix.c_str());
+      std::printf("\nwrote %s.seg and %s.ply", prefix.c_str(), prefix.c_str());
+      if (save_mat)
+        std::printf(", %s_base.ma and %s_struct.ma", prefix.c_str(), prefix.c_str());
+      std::printf("\n");
     }
   }
   catch (const std::exception& e) {

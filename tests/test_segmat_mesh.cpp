@@ -48,14 +48,57 @@ TEST(SegmatMesh, WritesSegAndPlyAndPrintsJson)
   }
   EXPECT_EQ(n, 8u);
   EXPECT_EQ(total, 19092u);
-  for (const char* stage : {"load", "graph", "tags", "surface_tree", "grow_merge", "transfer", "write"})
+  for (const char* stage :
+       {"load", "mat", "graph", "tags", "surface_tree", "grow_merge", "transfer", "write"})
     EXPECT_GE(json.get<double>(std::string("seconds.") + stage), 0.0) << stage;
+  EXPECT_EQ(json.get<double>("seconds.mat"), 0.0); // given, not computed
+  EXPECT_FALSE(json.get<bool>("mat_computed"));
+  EXPECT_EQ(json.get<int>("base_spheres"), 2000);
 
   // Plain output says the same.
   const test::ProgramRun plain = test::runProgram("segmat_mesh", teddyArgs(prefix + "_plain"));
   ASSERT_EQ(plain.status, 0) << plain.err;
   EXPECT_NE(plain.out.find("parts: 8"), std::string::npos) << plain.out;
   EXPECT_EQ(io::loadSeg(prefix + "_plain.seg"), labels);
+}
+
+TEST(SegmatMesh, ComputesTheMedialMeshesWhenNotGiven)
+{
+  const std::string prefix = test::scratchDir() + "teddy_nomat";
+  const test::ProgramRun run =
+      test::runProgram("segmat_mesh", kTeddy + "teddy.off -o " + prefix + " --save-mat --json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const std::vector<int> labels = io::loadSeg(prefix + ".seg", 19092); // exactly 19092 lines
+  EXPECT_EQ(labels.size(), 19092u);
+  ASSERT_TRUE(test::fileExists(prefix + ".ply"));
+  // The computed medial meshes, in Q-MAT's .ma format: "V E F" header, then V sphere lines.
+  const std::string base = test::readWholeFile(prefix + "_base.ma");
+  const std::string structured = test::readWholeFile(prefix + "_struct.ma");
+  EXPECT_EQ(base.rfind("2000 ", 0), 0u) << base.substr(0, 40);
+  EXPECT_FALSE(structured.empty());
+
+  std::istringstream in(run.out);
+  boost::property_tree::ptree json;
+  boost::property_tree::read_json(in, json);
+  EXPECT_TRUE(json.get<bool>("mat_computed"));
+  EXPECT_EQ(json.get<int>("base_spheres"), 2000);
+  EXPECT_GE(json.get<int>("structured_spheres"), 15); // the estimator's lower bound
+  EXPECT_EQ(json.get<int>("parts"), 8);
+  std::size_t total = 0;
+  for (const auto& c : json.get_child("face_counts"))
+    total += c.second.get_value<std::size_t>();
+  EXPECT_EQ(total, 19092u);
+  for (const char* stage :
+       {"load", "mat", "graph", "tags", "surface_tree", "grow_merge", "transfer", "write"})
+    EXPECT_GE(json.get<double>(std::string("seconds.") + stage), 0.0) << stage;
+  EXPECT_GT(json.get<double>("seconds.mat"), 0.0);
+
+  // The saved medial meshes given back with -b/-s give the same labels.
+  const test::ProgramRun again =
+      test::runProgram("segmat_mesh", kTeddy + "teddy.off -b " + prefix + "_base.ma -s " + prefix +
+                                          "_struct.ma -o " + prefix + "_given");
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_EQ(io::loadSeg(prefix + "_given.seg"), labels);
 }
 
 TEST(SegmatMesh, BadInputNamesTheFileAndFails)
@@ -77,10 +120,28 @@ TEST(SegmatMesh, BadInputNamesTheFileAndFails)
   EXPECT_NE(run.err.find("broken.ma"), std::string::npos) << run.err;
   EXPECT_FALSE(test::fileExists(prefix + ".seg"));
 
-  // Usage errors.
-  run = test::runProgram("segmat_mesh", kTeddy + "teddy.off -o " + prefix);
-  EXPECT_NE(run.status, 0);
+  // Usage errors (exit 2): one medial mesh without the other, no -o, --save-mat with given ones.
+  run = test::runProgram("segmat_mesh", kTeddy + "teddy.off -b " + kTeddy + "teddy_mat.ma -o " +
+                                            prefix);
+  EXPECT_EQ(run.status, 2);
   EXPECT_NE(run.err.find("usage"), std::string::npos);
+  EXPECT_NE(run.err.find("-b and -s"), std::string::npos) << run.err;
+  run = test::runProgram("segmat_mesh", kTeddy + "teddy.off -s " + kTeddy + "teddy_smat.ma -o " +
+                                            prefix);
+  EXPECT_EQ(run.status, 2);
+  run = test::runProgram("segmat_mesh", kTeddy + "teddy.off");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("usage"), std::string::npos);
+  run = test::runProgram("segmat_mesh", teddyArgs(prefix) + " --save-mat");
+  EXPECT_EQ(run.status, 2);
+
+  // A mesh that encloses nothing: the medial meshes cannot be computed (exit 1, a message).
+  const std::string sheet = test::writeScratchFile(
+      "sheet.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
+  run = test::runProgram("segmat_mesh", sheet + " -o " + prefix);
+  EXPECT_EQ(run.status, 1);
+  EXPECT_NE(run.err.find("sheet.off"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("MedialMeshEstimation"), std::string::npos) << run.err;
   run = test::runProgram("segmat_mesh", teddyArgs(prefix) + " -g abc");
   EXPECT_NE(run.status, 0);
   EXPECT_NE(run.err.find("-g"), std::string::npos);

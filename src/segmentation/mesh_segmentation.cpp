@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <segmat/segmentation/mesh_segmentation.h>
+#include <segmat/medial/medial_mesh_estimation.h>
 
 #include <pcl/console/print.h>
 
@@ -31,11 +32,26 @@ private:
 
 } // namespace
 
-MeshSegmentation::MeshSegmentation() = default; // the grower and the transfer hold the defaults
+// The grower, the transfer and the estimation hold the defaults.
+MeshSegmentation::MeshSegmentation() : estimation_(std::make_shared<MedialMeshEstimation>()) {}
+
+void
+MeshSegmentation::dropComputedMats()
+{
+  if (!mats_computed_)
+    return;
+  base_.reset();
+  structured_.reset();
+  mats_computed_ = false;
+  graph_.reset();
+  tags_valid_ = false;
+}
 
 void
 MeshSegmentation::setInputMesh(const TriangleMesh::ConstPtr& mesh)
 {
+  if (mesh != mesh_)
+    dropComputedMats(); // they belong to the previous mesh
   mesh_ = mesh;
   surface_tree_.reset();
   transfer_.setInputMesh(mesh); // drops the transfer's face-graph weights
@@ -44,6 +60,7 @@ MeshSegmentation::setInputMesh(const TriangleMesh::ConstPtr& mesh)
 void
 MeshSegmentation::setBaseMat(const MedialMesh::ConstPtr& base)
 {
+  dropComputedMats(); // a given MAT never pairs with a computed one
   base_ = base;
   graph_.reset();
   tags_valid_ = false;
@@ -52,8 +69,49 @@ MeshSegmentation::setBaseMat(const MedialMesh::ConstPtr& base)
 void
 MeshSegmentation::setStructuredMat(const MedialMesh::ConstPtr& structured)
 {
+  dropComputedMats();
   structured_ = structured;
   tags_valid_ = false;
+}
+
+void
+MeshSegmentation::setBaseMatTarget(int spheres)
+{
+  if (spheres != estimation_->getBaseTarget())
+    dropComputedMats();
+  estimation_->setBaseTarget(spheres);
+}
+
+int
+MeshSegmentation::getBaseMatTarget() const
+{
+  return estimation_->getBaseTarget();
+}
+
+void
+MeshSegmentation::setStructuredMatTarget(int spheres)
+{
+  if (spheres != estimation_->getStructuredTarget())
+    dropComputedMats();
+  estimation_->setStructuredTarget(spheres);
+}
+
+int
+MeshSegmentation::getStructuredMatTarget() const
+{
+  return estimation_->getStructuredTarget();
+}
+
+void
+MeshSegmentation::setNumberOfThreads(unsigned threads)
+{
+  estimation_->setNumberOfThreads(threads); // the output does not depend on it: keep the MATs
+}
+
+unsigned
+MeshSegmentation::getNumberOfThreads() const
+{
+  return estimation_->getNumberOfThreads();
 }
 
 bool
@@ -67,19 +125,42 @@ MeshSegmentation::segment(std::vector<int>& face_labels)
     PCL_ERROR("[segmat::MeshSegmentation::segment] no mesh, or a mesh without faces.\n");
     return false;
   }
-  if (!base_ || base_->empty()) {
-    PCL_ERROR("[segmat::MeshSegmentation::segment] no base medial mesh, or an empty one (medial "
-              "meshes are inputs for now: setBaseMat).\n");
-    return false;
-  }
-  if (!structured_) {
-    PCL_ERROR("[segmat::MeshSegmentation::segment] no structured medial mesh "
-              "(setStructuredMat).\n");
+  if (!base_ != !structured_) {
+    PCL_ERROR("[segmat::MeshSegmentation::segment] only the %s medial mesh is given: give both "
+              "(setBaseMat, setStructuredMat) or neither (they are then computed).\n",
+              base_ ? "base" : "structured");
     return false;
   }
 
   StageClock clock;
   double seconds = 0.0;
+  if (!base_) {
+    auto base = std::make_shared<MedialMesh>();
+    auto structured = std::make_shared<MedialMesh>();
+    estimation_->setInputMesh(mesh_);
+    const bool ok = estimation_->compute(*base, *structured);
+    estimation_->setInputMesh(nullptr); // hold the mesh only through mesh_
+    if (!ok) {
+      PCL_ERROR("[segmat::MeshSegmentation::segment] the medial meshes could not be computed "
+                "from the mesh (see the message above).\n");
+      return false;
+    }
+    base_ = base;
+    structured_ = structured;
+    mats_computed_ = true;
+    graph_.reset();
+    tags_valid_ = false;
+    seconds = clock.lap();
+  }
+  stage_seconds_.emplace_back("mat", seconds);
+  if (base_->empty()) {
+    PCL_ERROR("[segmat::MeshSegmentation::segment] the base medial mesh is empty.\n");
+    stage_seconds_.clear();
+    return false;
+  }
+
+  seconds = 0.0;
+  clock.lap();
   if (!graph_) {
     graph_ = std::make_shared<MatGraph>(MatGraph::fromMedialMesh(*base_));
     grower_.setInputGraph(graph_);
@@ -90,6 +171,7 @@ MeshSegmentation::segment(std::vector<int>& face_labels)
   if (graph_->empty()) {
     PCL_ERROR("[segmat::MeshSegmentation::segment] the base medial mesh has no triangle and no "
               "edge: no graph node.\n");
+    stage_seconds_.clear();
     return false;
   }
   stage_seconds_.emplace_back("graph", seconds);

@@ -21,31 +21,37 @@
 
 namespace segmat {
 
+class MedialMeshEstimation;
+
 /** \brief End-to-end part segmentation of a triangle mesh with SEG-MAT (Lin et al., "SEG-MAT:
  * 3D Shape Segmentation Using Medial Axis Transform", IEEE TVCG 2022).
  *
  * Stages, each timed (getStageSeconds()):
+ *  0. "mat": the base and structured medial meshes from the mesh (MedialMeshEstimation: Voronoi
+ *     MAT + Q-MAT, §3), only when none was given (setBaseMat / setStructuredMat);
  *  1. "graph": the base-MAT graph (MatGraph::fromMedialMesh, §4.1);
  *  2. "tags": structural tags from the structured MAT (computeStructureTags, §4.2);
  *  3. "surface_tree": an AabbTree over the mesh, for the merging's visibility test;
  *  4. "grow_merge": region growing, swallowing, tiny-patch absorption and merging
  *     (MatRegionGrowing, §4.3–4.4);
  *  5. "transfer": the parts carried to the faces by α-expansion (MeshLabelTransfer, §5).
- * Stages 1–3 (and the transfer's face-graph weights) depend only on the inputs: they are computed
+ * Stages 0–3 (and the transfer's face-graph weights) depend only on the inputs: they are computed
  * once and reused when only δ0, η, α, λ or ω change and segment() runs again (CGAL's split of
  * sdf_values / segmentation_from_sdf_values). A reused stage reports 0 seconds.
  *
- * The medial meshes are inputs for now (e.g. the authors' Q-MAT files, io::loadMa); computing
- * them from the mesh is the job of a separate estimator. Without them segment() fails.
+ * The medial meshes are computed from the mesh unless both are given (e.g. the authors' Q-MAT
+ * files, io::loadMa); the computed ones are kept until the mesh or a MAT target changes and can
+ * be read back with getBaseMat() / getStructuredMat() (e.g. to io::saveMa them).
  *
  * \code
  * segmat::MeshSegmentation seg;
  * seg.setInputMesh(mesh);           // TriangleMesh::ConstPtr (io::loadMesh)
+ * std::vector<int> face_labels;
+ * if (seg.segment(face_labels))     // computes the medial meshes, then the parts
+ *   segmat::io::saveSeg("out.seg", face_labels);
+ * // Or with given medial meshes (both, before segment()):
  * seg.setBaseMat(base);             // MedialMesh::ConstPtr (io::loadMa)
  * seg.setStructuredMat(structured); // MedialMesh::ConstPtr
- * std::vector<int> face_labels;
- * if (seg.segment(face_labels))
- *   segmat::io::saveSeg("out.seg", face_labels);
  * \endcode
  */
 class MeshSegmentation
@@ -69,12 +75,15 @@ public:
   }
 
   /** \brief The base (detailed, e.g. 2000-sphere Q-MAT) medial mesh: the graph the parts grow
-   * on.
+   * on. Give both medial meshes or neither (null: computed by segment()); setting one after a
+   * segment() that computed them drops the computed pair.
    */
   void
   setBaseMat(const MedialMesh::ConstPtr& base);
 
-  /** \brief The base medial mesh. */
+  /** \brief The base medial mesh: the given one, or the one the last segment() computed (null
+   * before).
+   */
   MedialMesh::ConstPtr
   getBaseMat() const
   {
@@ -83,15 +92,55 @@ public:
 
   /** \brief The structured (coarse, e.g. 15–30-sphere Q-MAT) medial mesh that tells thin parts
    * from bulky ones. An empty one is accepted (every node is then bulky, like the reference).
+   * Give both medial meshes or neither (see setBaseMat()).
    */
   void
   setStructuredMat(const MedialMesh::ConstPtr& structured);
 
-  /** \brief The structured medial mesh. */
+  /** \brief The structured medial mesh: the given one, or the one the last segment() computed
+   * (null before).
+   */
   MedialMesh::ConstPtr
   getStructuredMat() const
   {
     return structured_;
+  }
+
+  /** \brief Spheres of the computed base MAT (MedialMeshEstimation::setBaseTarget; default
+   * 2000). Unused when the medial meshes are given.
+   */
+  void
+  setBaseMatTarget(int spheres);
+
+  /** \brief Spheres of the computed base MAT. */
+  int
+  getBaseMatTarget() const;
+
+  /** \brief Spheres of the computed structured MAT (MedialMeshEstimation::setStructuredTarget;
+   * default −1: max(15, ⌊0.001 × initial spheres⌋)). Unused when the medial meshes are given.
+   */
+  void
+  setStructuredMatTarget(int spheres);
+
+  /** \brief Spheres of the computed structured MAT (−1: automatic). */
+  int
+  getStructuredMatTarget() const;
+
+  /** \brief Threads of the medial-mesh computation (MedialMeshEstimation::setNumberOfThreads;
+   * 0 = OpenMP's default). The output does not depend on it.
+   */
+  void
+  setNumberOfThreads(unsigned threads);
+
+  /** \brief Threads of the medial-mesh computation. */
+  unsigned
+  getNumberOfThreads() const;
+
+  /** \brief Whether the current medial meshes were computed by segment() (not given). */
+  bool
+  hasComputedMats() const
+  {
+    return mats_computed_;
   }
 
   /** \brief δ0, the growing threshold (default 0.015). */
@@ -168,8 +217,9 @@ public:
   /** \brief Segment the mesh.
    * \param[out] face_labels one label per face, dense 0..k−1, numbered by descending part size
    *             (face count; ties: the part grown first comes first). Empty on failure.
-   * \return false (PCL_ERROR) when the mesh has no faces, a medial mesh is missing or the base
-   *         one is empty, or a stage fails.
+   * \return false (PCL_ERROR) when the mesh has no faces, only one medial mesh is given, the
+   *         base one is empty, the medial meshes cannot be computed (e.g. a mesh that encloses no
+   *         volume), or a stage fails.
    */
   bool
   segment(std::vector<int>& face_labels);
@@ -178,8 +228,8 @@ public:
   void
   getParts(std::vector<pcl::PointIndices>& parts) const;
 
-  /** \brief Seconds spent in each stage by the last segment(), in pipeline order ("graph",
-   * "tags", "surface_tree", "grow_merge", "transfer"); a stage whose result was reused reports 0.
+  /** \brief Seconds spent in each stage by the last segment(), in pipeline order ("mat",
+   * "graph", "tags", "surface_tree", "grow_merge", "transfer"); a stage whose result was reused reports 0.
    */
   const std::vector<std::pair<std::string, double>>&
   getStageSeconds() const
@@ -204,9 +254,16 @@ public:
   }
 
 private:
+  /** \brief Forgets base_ and structured_ (and what depends on them) if segment() computed them. */
+  void
+  dropComputedMats();
+
   TriangleMesh::ConstPtr mesh_;
   MedialMesh::ConstPtr base_;
   MedialMesh::ConstPtr structured_;
+  // Computes base_ and structured_ when neither was given; mats_computed_ says they are its.
+  std::shared_ptr<MedialMeshEstimation> estimation_;
+  bool mats_computed_ = false;
 
   // The field: recomputed only when an input changes.
   MatGraph::Ptr graph_;
