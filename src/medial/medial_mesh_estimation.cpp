@@ -1,0 +1,62 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <segmat/medial/medial_mesh_estimation.h>
+#include <segmat/medial/qmat_simplification.h>
+
+#include <pcl/console/print.h>
+
+#include <chrono>
+
+
+namespace segmat {
+
+bool
+MedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
+{
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  base = MedialMesh();
+  structured = MedialMesh();
+  initial_ = std::make_shared<MedialMesh>();
+  statistics_ = MedialMeshEstimationStatistics();
+  if (!mesh_ || mesh_->empty()) {
+    PCL_ERROR("[segmat::MedialMeshEstimation::compute] no input mesh (or it has no faces)\n");
+    return false;
+  }
+
+  voronoi_.setInputMesh(mesh_);
+  const bool voronoi_ok = voronoi_.compute(*initial_);
+  statistics_.voronoi = voronoi_.getStatistics();
+  statistics_.initial_spheres = initial_->numVertices();
+  const auto after_voronoi = Clock::now();
+  statistics_.seconds_initial = std::chrono::duration<double>(after_voronoi - start).count();
+  if (!voronoi_ok)
+    return false; // VoronoiMat said why
+  if (initial_->numEdges() == 0) {
+    PCL_ERROR("[segmat::MedialMeshEstimation::compute] the mesh encloses no medial sphere pair "
+              "(%zu spheres, no edge): is it closed?\n",
+              initial_->numVertices());
+    return false;
+  }
+
+  QmatSimplification qmat;
+  qmat.setInputMat(initial_);
+  if (keep_centres_inside_)
+    qmat.setInputSurface(mesh_); // normalisation by its diagonal; merged centres stay inside
+  else
+    qmat.setNormalisationScale(mesh_->boundingBoxDiagonal()); // Q-MAT's normalisation
+  qmat.setBaseTarget(simplification_base_target_);
+  qmat.setStructuredTarget(simplification_structured_target_);
+  qmat.setNumberOfThreads(voronoi_.getNumberOfThreads());
+  const bool ok = qmat.compute(base, structured);
+  const auto end = Clock::now();
+  statistics_.seconds_simplification = std::chrono::duration<double>(end - after_voronoi).count();
+  statistics_.seconds_total = std::chrono::duration<double>(end - start).count();
+  statistics_.base_spheres = base.numVertices();
+  statistics_.structured_spheres = structured.numVertices();
+  return ok;
+}
+
+} // namespace segmat

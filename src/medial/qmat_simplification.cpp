@@ -1,0 +1,1272 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <segmat/geometry/cone_tangent_plane.h>
+#include <segmat/geometry/medial_primitives.h>
+#include <segmat/geometry/winding_number.h>
+#include <segmat/medial/qmat_simplification.h>
+#include <segmat/medial/sphere_quadric.h>
+
+#include <Eigen/Geometry>
+#include <pcl/console/print.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace segmat {
+namespace {
+
+constexpr double kHalfPi = 1.57079632679489661923;
+/// Neighbourhood searched for a disk bounding a cycle a collapse would kill: at every pop, and
+/// once the queue has run dry.
+constexpr int kPopPatchRings = 2;
+constexpr int kStuckPatchRings = 4;
+
+/** A collapse candidate's place in the queue: tier, then cost, then the edge's endpoint indices
+ * (deterministic ties). */
+struct QueueKey
+{
+  double cost = 0.0;
+  int lo = 0, hi = 0;
+  std::uint8_t tier = 0; ///< 0: normal; 1: every candidate flips a triangle (deferred)
+
+  bool
+  operator<(const QueueKey& o) const
+  {
+    if (tier != o.tier)
+      return tier < o.tier;
+    if (cost != o.cost)
+      return cost < o.cost;
+    if (lo != o.lo)
+      return lo < o.lo;
+    return hi < o.hi;
+  }
+};
+
+/** Indexed 4-ary min-heap of edges: one entry per edge, keys updated in place, so the heap never
+ * holds stale entries and stays no larger than the number of live edges. */
+class EdgeHeap
+{
+public:
+  explicit EdgeHeap(std::size_t num_edges = 0) : pos_(num_edges, -1) {}
+
+  bool empty() const { return nodes_.empty(); }
+  int topEdge() const { return nodes_.front().edge; }
+  const QueueKey& topKey() const { return nodes_.front().key; }
+
+  /** Inserts edge e or changes its key. */
+  void
+  set(int e, const QueueKey& key)
+  {
+    if (pos_[e] < 0) {
+      pos_[e] = static_cast<int>(nodes_.size());
+      nodes_.push_back({key, e});
+      siftUp(pos_[e]);
+      return;
+    }
+    const int i = pos_[e];
+    const bool up = key < nodes_[i].key;
+    nodes_[i].key = key;
+    if (up)
+      siftUp(i);
+    else
+      siftDown(i);
+  }
+
+  /** Removes edge e if present. */
+  void
+  erase(int e)
+  {
+    const int i = pos_[e];
+    if (i < 0)
+      return;
+    pos_[e] = -1;
+    const Node last = nodes_.back();
+    nodes_.pop_back();
+    if (i == static_cast<int>(nodes_.size()))
+      return;
+    nodes_[i] = last;
+    pos_[last.edge] = i;
+    if (i > 0 && last.key < nodes_[(i - 1) / 4].key)
+      siftUp(i);
+    else
+      siftDown(i);
+  }
+
+private:
+  struct Node
+  {
+    QueueKey key;
+    int edge;
+  };
+
+  void
+  siftUp(int i)
+  {
+    const Node n = nodes_[i];
+    while (i > 0) {
+      const int parent = (i - 1) / 4;
+      if (!(n.key < nodes_[parent].key))
+        break;
+      nodes_[i] = nodes_[parent];
+      pos_[nodes_[i].edge] = i;
+      i = parent;
+    }
+    nodes_[i] = n;
+    pos_[n.edge] = i;
+  }
+
+  void
+  siftDown(int i)
+  {
+    const Node n = nodes_[i];
+    const int size = static_cast<int>(nodes_.size());
+    for (;;) {
+      const int first = 4 * i + 1;
+      if (first >= size)
+        break;
+      int best = first;
+      const int last = std::min(first + 4, size);
+      for (int c = first + 1; c < last; ++c)
+        if (nodes_[c].key < nodes_[best].key)
+          best = c;
+      if (!(nodes_[best].key < n.key))
+        break;
+      nodes_[i] = nodes_[best];
+      pos_[nodes_[i].edge] = i;
+      i = best;
+    }
+    nodes_[i] = n;
+    pos_[n.edge] = i;
+  }
+
+  std::vector<Node> nodes_;
+  std::vector<int> pos_;
+};
+
+/** The sphere an edge would collapse to and the cost of doing so. */
+struct CollapseChoice
+{
+  Eigen::Vector4d sphere;
+  double cost = 0.0;
+  std::uint8_t tier = 0;
+  /// Triangles that made cheaper candidates flip (-1: unused). While they stand unchanged the
+  /// key cannot drop; once one changes, it may, but not below \a bound.
+  std::array<int, 4> blockers = {-1, -1, -1, -1};
+  double bound = 0.0; ///< the cost were nothing to flip: a lower bound of every later cost
+  std::uint8_t candidate = 0; ///< which sphere: kOptimum, kFirstEnd, kSecondEnd or kMidpoint
+};
+
+enum Candidate : std::uint8_t
+{
+  kOptimum = 0,
+  kFirstEnd = 1,
+  kSecondEnd = 2,
+  kMidpoint = 3,
+};
+/// Bits of EdgeCollapser::e_outside_: candidates found outside the surface.
+constexpr std::uint8_t kOptimumOutside = 1, kMidpointOutside = 2;
+
+/** Incremental span of GF(2) vectors (echelon form keyed by leading bit), flat storage. Used to
+ * decide whether a cycle is a sum of triangle boundaries (a mod-2 boundary). */
+class Gf2Span
+{
+public:
+  /** Empties the span; vectors have \a bits entries. */
+  void
+  reset(std::size_t bits)
+  {
+    words_ = (bits + 63) / 64;
+    rows_.clear();
+    lead_row_.assign(bits, -1);
+    scratch_.assign(words_, 0);
+  }
+
+  /** The zeroed working vector to fill with flip(). */
+  std::uint64_t*
+  scratch()
+  {
+    std::fill(scratch_.begin(), scratch_.end(), 0);
+    return scratch_.data();
+  }
+
+  static void
+  flip(std::uint64_t* v, std::size_t bit)
+  {
+    v[bit / 64] ^= std::uint64_t(1) << (bit % 64);
+  }
+
+  /** Adds the working vector to the span. */
+  void
+  insertScratch()
+  {
+    const long h = reduce();
+    if (h < 0)
+      return;
+    lead_row_[h] = static_cast<long>(rows_.size() / words_);
+    rows_.insert(rows_.end(), scratch_.begin(), scratch_.end());
+  }
+
+  /** True when the working vector is in the span. */
+  bool
+  scratchInSpan()
+  {
+    return reduce() < 0;
+  }
+
+private:
+  /** Reduces the working vector by the rows; returns its leading bit (-1: zero). */
+  long
+  reduce()
+  {
+    for (;;) {
+      long h = -1;
+      for (std::size_t w = words_; w-- > 0;)
+        if (scratch_[w]) {
+          h = static_cast<long>(w * 64 + 63 - __builtin_clzll(scratch_[w]));
+          break;
+        }
+      if (h < 0 || lead_row_[h] < 0)
+        return h;
+      const std::uint64_t* row = rows_.data() + lead_row_[h] * words_;
+      for (std::size_t w = 0; w < words_; ++w)
+        scratch_[w] ^= row[w];
+    }
+  }
+
+  std::size_t words_ = 0;
+  std::vector<std::uint64_t> rows_;
+  std::vector<long> lead_row_;
+  std::vector<std::uint64_t> scratch_;
+};
+
+struct Settings
+{
+  double k;
+  double boundary_weight;
+  bool prevent_inversion;
+  bool preserve_cavities;
+  unsigned threads;
+};
+
+/** The dynamic simplicial 2-complex being simplified. Vertex ids: kept input spheres first (in
+ * input order), merged spheres appended in merge order — exactly the output order. */
+class EdgeCollapser
+{
+public:
+  /** \a inside: optional surface whose inside merged centres must stay in (not owned). */
+  EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origin, double scale,
+                const Settings& settings, const WindingNumber* inside);
+
+  std::size_t aliveCount() const { return alive_count_; }
+  std::size_t collapses() const { return collapses_; }
+  std::size_t penalisedCollapses() const { return penalised_; }
+
+  /** Collapse until \a target spheres remain or nothing can collapse; returns the count. */
+  std::size_t run(std::size_t target);
+
+  /** The current complex in input units, compacted. */
+  MedialMesh extract() const;
+
+private:
+  bool hasVertex(int f, int v) const
+  {
+    const auto& t = f_v_[f];
+    return t[0] == v || t[1] == v || t[2] == v;
+  }
+  int other(int e, int v) const { return e_v_[e][0] == v ? e_v_[e][1] : e_v_[e][0]; }
+
+  void buildQuadrics();
+  CollapseChoice evaluate(int e, bool check_flips = true) const;
+  QueueKey keyOf(int e, const CollapseChoice& c) const
+  {
+    const int ra = output_rank_[e_v_[e][0]], rb = output_rank_[e_v_[e][1]];
+    return {c.cost, std::min(ra, rb), std::max(ra, rb), c.tier};
+  }
+  Eigen::Vector3d faceNormal(int f) const;
+  bool linkCondition(int e);
+  bool unblockByHomology();
+  bool killedCyclesAreBoundaries(int e, int rings);
+  bool cyclesBoundWithin(int a, int b, int rings);
+  bool faceExists(int a, int x, int y) const;
+  bool insideSurface(int from, const Eigen::Vector4d& sphere) const;
+  void collapse(int e, const Eigen::Vector4d& target);
+  void push(int e);
+  void pushBound(int e);
+  static void removeFrom(std::vector<int>& list, int value);
+
+  Settings settings_;
+  Eigen::Vector3d origin_;
+  double scale_;
+  const WindingNumber* inside_; ///< optional surface (input units)
+
+  // vertices
+  std::vector<int> output_rank_; ///< position in the output order (input order, then merges)
+  std::vector<Eigen::Vector4d> sphere_;
+  struct Quadrics
+  {
+    SphereQuadric face; ///< slab tangent planes only (§8.3)
+    SphereQuadric all;  ///< plus sheet borders, pure edges, branch tips (§8.3)
+  };
+  std::vector<Quadrics> q_; ///< side by side: an evaluation reads both
+  std::vector<char> v_alive_;
+  std::vector<std::vector<int>> v_edges_, v_faces_;
+  std::vector<std::uint32_t> mark_;
+  std::uint32_t stamp_ = 0;
+  // edges
+  std::vector<int> e_orig_; ///< input index of each edge
+  std::vector<std::array<int, 2>> e_v_;
+  std::vector<char> e_alive_, e_blocked_;
+  std::vector<std::size_t> e_evaluated_; ///< collapse count when the edge's key was computed
+  std::vector<Eigen::Vector4d> e_target_; ///< the sphere chosen then
+  std::vector<std::array<int, 4>> e_blockers_; ///< CollapseChoice::blockers then
+  std::vector<double> e_bound_;                ///< CollapseChoice::bound then
+  std::vector<char> e_verified_; ///< key checked for flips (else it is the bound)
+  std::vector<std::uint8_t> e_candidate_; ///< CollapseChoice::candidate of the key
+  std::vector<std::uint8_t> e_outside_;   ///< kOptimumOutside | kMidpointOutside
+  std::vector<std::size_t> v_touched_;   ///< collapse count when a triangle around it changed
+  // faces
+  std::vector<int> f_orig_; ///< input index of each triangle
+  std::vector<std::array<int, 3>> f_v_;
+  std::vector<Eigen::Vector3d> f_normal_; ///< (p1 − p0) × (p2 − p0); zero when degenerate
+  std::vector<char> f_alive_;
+
+  EdgeHeap heap_;
+  std::size_t alive_count_ = 0;
+  std::size_t collapses_ = 0;
+  std::size_t penalised_ = 0;
+  std::vector<int> scratch_;
+  // killedCyclesAreBoundaries() buffers, kept to avoid allocations
+  std::vector<int> scratch_bad_, scratch_patch_, scratch_faces_;
+  std::vector<std::uint64_t> scratch_keys_;
+  Gf2Span scratch_span_;
+};
+
+EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origin, double scale,
+                             const Settings& settings, const WindingNumber* inside)
+: settings_(settings), origin_(origin), scale_(scale), inside_(inside)
+{
+  const int n_in = static_cast<int>(mat.numVertices());
+  // Isolated spheres cannot collapse; Q-MAT drops them (CleanIsolatedVertices).
+  std::vector<int> kept;
+  for (int v = 0; v < n_in; ++v)
+    if (!mat.vertexEdges(v).empty())
+      kept.push_back(v);
+  const int n = static_cast<int>(kept.size());
+  alive_count_ = static_cast<std::size_t>(n);
+
+  // Internal order: breadth-first along the edges (as reverse Cuthill–McKee orders a sparse
+  // matrix), so that a collapse's neighbourhood is close in memory; about 10 % faster on Voronoi
+  // MATs, whose own order is that of the tetrahedra. Ties and the output keep the input order
+  // (output_rank_).
+  std::vector<int> kept_index(n_in, -1);
+  for (int i = 0; i < n; ++i)
+    kept_index[kept[i]] = i;
+  std::vector<int> order;
+  order.reserve(n);
+  std::vector<char> seen(n, 0);
+  for (int start = 0; start < n; ++start) {
+    if (seen[start])
+      continue;
+    seen[start] = 1;
+    std::size_t tail = order.size();
+    order.push_back(start);
+    for (; tail < order.size(); ++tail) {
+      const int v = kept[order[tail]];
+      for (int e : mat.vertexEdges(v)) {
+        const int k = kept_index[mat.edges()[e][0] == v ? mat.edges()[e][1] : mat.edges()[e][0]];
+        if (!seen[k]) {
+          seen[k] = 1;
+          order.push_back(k);
+        }
+      }
+    }
+  }
+  std::vector<int> to_internal(n_in, -1);
+  for (int i = 0; i < n; ++i)
+    to_internal[kept[order[i]]] = i;
+
+  const std::size_t capacity = n > 0 ? 2 * static_cast<std::size_t>(n) - 1 : 0;
+  sphere_.reserve(capacity);
+  q_.reserve(capacity);
+  v_alive_.reserve(capacity);
+  v_edges_.reserve(capacity);
+  v_faces_.reserve(capacity);
+  mark_.assign(capacity, 0);
+  output_rank_.resize(capacity);
+  for (int i = 0; i < n; ++i) {
+    const int v = kept[order[i]];
+    Eigen::Vector4d s;
+    s.head<3>() = (mat.centers()[v] - origin_) / scale_;
+    s[3] = mat.radii()[v] / scale_;
+    sphere_.push_back(s);
+    v_alive_.push_back(1);
+    output_rank_[i] = order[i];
+  }
+  for (std::size_t v = n; v < capacity; ++v)
+    output_rank_[v] = static_cast<int>(v); // merged spheres follow the survivors in merge order
+  q_.resize(n);
+  v_edges_.resize(n);
+  v_faces_.resize(n);
+
+  // Edges and triangles in the order of their smallest internal corner, for the same reason.
+  auto sortedBySmallestCorner = [](std::size_t count, auto corners) {
+    std::vector<std::pair<std::array<int, 3>, int>> keyed(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      keyed[i] = {corners(i), static_cast<int>(i)};
+      std::sort(keyed[i].first.begin(), keyed[i].first.end());
+    }
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<int> ids(count);
+    for (std::size_t i = 0; i < count; ++i)
+      ids[i] = keyed[i].second;
+    return ids;
+  };
+  e_orig_ = sortedBySmallestCorner(mat.numEdges(), [&](std::size_t e) {
+    return std::array<int, 3>{to_internal[mat.edges()[e][0]], to_internal[mat.edges()[e][1]], -1};
+  });
+  e_v_.reserve(mat.numEdges());
+  for (int orig : e_orig_) {
+    const int id = static_cast<int>(e_v_.size());
+    const int a = to_internal[mat.edges()[orig][0]], b = to_internal[mat.edges()[orig][1]];
+    e_v_.push_back({a, b});
+    v_edges_[a].push_back(id);
+    v_edges_[b].push_back(id);
+  }
+  e_alive_.assign(e_v_.size(), 1);
+  e_blocked_.assign(e_v_.size(), 0);
+  e_evaluated_.assign(e_v_.size(), 0);
+  e_target_.resize(e_v_.size());
+  e_blockers_.resize(e_v_.size());
+  e_bound_.resize(e_v_.size());
+  e_verified_.assign(e_v_.size(), 0);
+  e_candidate_.assign(e_v_.size(), kOptimum);
+  e_outside_.assign(e_v_.size(), 0);
+  v_touched_.assign(capacity, 0);
+
+  f_orig_ = sortedBySmallestCorner(mat.numTriangles(), [&](std::size_t f) {
+    const Eigen::Vector3i& t = mat.triangles()[f];
+    return std::array<int, 3>{to_internal[t[0]], to_internal[t[1]], to_internal[t[2]]};
+  });
+  f_v_.reserve(mat.numTriangles());
+  for (int orig : f_orig_) {
+    const int id = static_cast<int>(f_v_.size());
+    const Eigen::Vector3i& t = mat.triangles()[orig];
+    f_v_.push_back({to_internal[t[0]], to_internal[t[1]], to_internal[t[2]]});
+    for (int k = 0; k < 3; ++k)
+      v_faces_[to_internal[t[k]]].push_back(id);
+  }
+  f_alive_.assign(f_v_.size(), 1);
+  f_normal_.resize(f_v_.size());
+  for (std::size_t f = 0; f < f_v_.size(); ++f)
+    f_normal_[f] = faceNormal(static_cast<int>(f));
+
+  buildQuadrics();
+
+  // Every edge's first cost; independent per edge, so threads cannot change the result.
+  const int num_edges = static_cast<int>(e_v_.size());
+  std::vector<CollapseChoice> first(num_edges);
+#ifdef _OPENMP
+  const int threads =
+      settings_.threads > 0 ? static_cast<int>(settings_.threads) : omp_get_max_threads();
+#endif
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (int e = 0; e < num_edges; ++e)
+    first[e] = evaluate(e, false);
+  heap_ = EdgeHeap(e_v_.size());
+  for (int e = 0; e < num_edges; ++e) {
+    heap_.set(e, keyOf(e, first[e]));
+    e_target_[e] = first[e].sphere;
+    e_blockers_[e] = first[e].blockers;
+    e_bound_[e] = first[e].bound;
+  }
+}
+
+Eigen::Vector3d
+EdgeCollapser::faceNormal(int f) const
+{
+  const auto& t = f_v_[f];
+  const Eigen::Vector3d e1 = sphere_[t[1]].head<3>() - sphere_[t[0]].head<3>();
+  const Eigen::Vector3d e2 = sphere_[t[2]].head<3>() - sphere_[t[0]].head<3>();
+  const Eigen::Vector3d n = e1.cross(e2);
+  // A (nearly) degenerate triangle has no orientation to lose: zero disables its flip test.
+  return n.squaredNorm() > 1e-14 * e1.squaredNorm() * e2.squaredNorm() ? n
+                                                                          : Eigen::Vector3d::Zero();
+}
+
+void
+EdgeCollapser::buildQuadrics()
+{
+  // Slab sides: both tangent planes of every triangle, weight 1, on all three corners.
+  for (std::size_t f = 0; f < f_v_.size(); ++f) {
+    const auto& t = f_v_[f];
+    const Eigen::Vector3d c[3] = {sphere_[t[0]].head<3>(), sphere_[t[1]].head<3>(),
+                                  sphere_[t[2]].head<3>()};
+    const double r[3] = {sphere_[t[0]][3], sphere_[t[1]][3], sphere_[t[2]][3]};
+    SlabSides sides;
+    if (!computeSlabSides(c, r, f_normal_[f], sides))
+      continue;
+    // Both planes touch all three spheres, so any corner defines them.
+    const SphereQuadric q = SphereQuadric::fromPlane(sides.normal[0], sphere_[t[0]]) +
+                            SphereQuadric::fromPlane(sides.normal[1], sphere_[t[0]]);
+    for (int k = 0; k < 3; ++k)
+      q_[t[k]].face += q;
+  }
+  for (Quadrics& q : q_)
+    q.all = q.face;
+
+  // Q-MAT "PreservBoundaryMethodFour" (§8.3): weight bound_weight · 0.1 · ratio².
+  for (std::size_t ue = 0; ue < e_v_.size(); ++ue) {
+    const int e = static_cast<int>(ue);
+    const int a = e_v_[e][0], b = e_v_[e][1];
+    int tri_count = 0;
+    for (int f : v_faces_[a])
+      tri_count += hasVertex(f, b);
+    if (tri_count > 1)
+      continue;
+    const Eigen::Vector4d& sa = sphere_[a];
+    const Eigen::Vector4d& sb = sphere_[b];
+    const double ratio = stabilityRatio(sa, sb);
+    const double w = settings_.boundary_weight * 0.1 * ratio * ratio;
+    const Eigen::Vector3d ab = sa.head<3>() - sb.head<3>();
+    if (tri_count == 1) {
+      // Sheet border: the plane through the edge perpendicular to the sheet, pointing away from
+      // the triangle's third corner. Its normal is deliberately not unit (length = edge length),
+      // as in the published code.
+      int third = -1;
+      Eigen::Vector3d face_normal = Eigen::Vector3d::Zero();
+      for (int f : v_faces_[a]) {
+        if (!hasVertex(f, b))
+          continue;
+        const auto& t = f_v_[f];
+        third = t[0] != a && t[0] != b ? t[0] : (t[1] != a && t[1] != b ? t[1] : t[2]);
+        face_normal = (sphere_[t[1]].head<3>() - sphere_[t[0]].head<3>())
+                          .cross(sphere_[t[2]].head<3>() - sphere_[t[0]].head<3>());
+        break;
+      }
+      const double len = face_normal.norm();
+      if (third < 0 || !(len > 0.0))
+        continue;
+      Eigen::Vector3d t = (face_normal / len).cross(ab);
+      if (t.dot(sphere_[third].head<3>() - sa.head<3>()) > 0.0)
+        t = -t;
+      q_[a].all += SphereQuadric::fromPlane(t, sa, w);
+      q_[b].all += SphereQuadric::fromPlane(t, sb, w);
+      continue;
+    }
+    // Pure edge (a medial cone). The published code took the tangent planes of the spheres a, b
+    // and (c_a + c_b, (r_a + r_b)/2) — a sum where the midpoint was meant, so the planes depended
+    // on the origin. With the midpoint the three spheres are collinear and every plane tangent
+    // to the cone qualifies; four planes 90° apart, weight ½ each (the published code used two,
+    // weight 1), give the rotation-symmetric quadric whatever the first plane's angle. Each comes
+    // with its companion plane of normal (c_a − c_b) × n, as in the published code.
+    for (int i = 0; i < 4; ++i) {
+      Eigen::Vector3d n;
+      if (!coneTangentPlane(sa, sb, i * kHalfPi, n))
+        break;
+      const Eigen::Vector3d companion = ab.cross(n);
+      for (int v : {a, b}) {
+        q_[v].all += SphereQuadric::fromPlane(n, sphere_[v], 0.5);
+        q_[v].all += SphereQuadric::fromPlane(companion, sphere_[v], 0.5);
+      }
+    }
+    // Branch tips (a sphere with this one edge) are held by a plane across the axis.
+    if (v_edges_[a].size() == 1)
+      q_[a].all += SphereQuadric::fromPlane(ab, sa, w);
+    if (v_edges_[b].size() == 1)
+      q_[b].all += SphereQuadric::fromPlane(-ab, sb, w);
+  }
+}
+
+CollapseChoice
+EdgeCollapser::evaluate(int e, bool check_flips) const
+{
+  const int a = e_v_[e][0], b = e_v_[e][1];
+  const Eigen::Vector4d& sa = sphere_[a];
+  const Eigen::Vector4d& sb = sphere_[b];
+  const SphereQuadric q = q_[a].all + q_[b].all;
+
+  // Triangles that survive the collapse, each as a half-space test: moving the corner v of a
+  // triangle (v, q1, q2) to x flips it iff (q1 − x)·w < 0 with w = (q2 − q1) × n, n its normal.
+  // Making it (nearly) degenerate counts as a flip — new sin(angle at q1)² <= 1e-14, the same
+  // test as faceNormal(): a degenerate triangle has no orientation left to protect, and later
+  // collapses would fold it over unnoticed.
+  struct FlipTest
+  {
+    Eigen::Vector3d q1;
+    Eigen::Vector3d w;
+    double w_norm2;
+    int face;
+  };
+  // Most vertices carry a few dozen triangles; a rare hub spills to the heap.
+  constexpr std::size_t kInline = 64;
+  FlipTest inline_tests[kInline];
+  std::vector<FlipTest> spilled;
+  std::size_t num_tests = 0;
+  auto addTest = [&](const FlipTest& t) {
+    if (num_tests < kInline)
+      inline_tests[num_tests] = t;
+    else {
+      if (spilled.empty())
+        spilled.assign(inline_tests, inline_tests + kInline);
+      spilled.push_back(t);
+    }
+    ++num_tests;
+  };
+  bool has_faces = false; // a triangle on ab (it disappears with the collapse)
+  if (!check_flips || !settings_.prevent_inversion) {
+    for (int f : v_faces_[a])
+      if (hasVertex(f, b)) {
+        has_faces = true;
+        break;
+      }
+  }
+  else {
+    for (int v : {a, b})
+      for (int f : v_faces_[v]) {
+        const auto& t = f_v_[f];
+        const int k = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+        const int q1 = t[(k + 1) % 3], q2 = t[(k + 2) % 3];
+        if (q1 == a || q1 == b || q2 == a || q2 == b) {
+          has_faces = true;
+          continue;
+        }
+        if (f_normal_[f].isZero())
+          continue;
+        const Eigen::Vector3d p1 = sphere_[q1].head<3>();
+        const Eigen::Vector3d w = (sphere_[q2].head<3>() - p1).cross(f_normal_[f]);
+        addTest({p1, w, w.squaredNorm(), f});
+      }
+  }
+  // The first triangle that m would flip, or -1.
+  const FlipTest* tests = spilled.empty() ? inline_tests : spilled.data();
+  auto flipped = [&](const Eigen::Vector4d& m) {
+    const Eigen::Vector3d x = m.head<3>();
+    for (std::size_t i = 0; i < num_tests; ++i) {
+      const FlipTest& ft = tests[i];
+      const Eigen::Vector3d d = ft.q1 - x;
+      const double side = d.dot(ft.w);
+      if (side <= 0.0 || side * side <= 1e-14 * ft.w_norm2 * d.squaredNorm())
+        return ft.face;
+    }
+    return -1;
+  };
+
+  const Eigen::Vector4d mid = 0.5 * (sa + sb);
+  const Eigen::Vector4d* fallback[3] = {&sa, &sb, &mid};
+  const std::uint8_t fallback_id[3] = {kFirstEnd, kSecondEnd, kMidpoint};
+  // A midpoint found outside the surface is no candidate (the ends are inside by induction).
+  const int num_fallbacks = (e_outside_[e] & kMidpointOutside) ? 2 : 3;
+  double fallback_cost[3] = {-1.0, -1.0, -1.0}; // filled when needed
+  auto fillFallbackCosts = [&] {
+    if (fallback_cost[0] < 0.0)
+      for (int i = 0; i < 3; ++i)
+        fallback_cost[i] = std::max(0.0, q(*fallback[i]));
+  };
+  auto takeFallback = [&](CollapseChoice& c, int i) {
+    c.sphere = *fallback[i];
+    c.cost = fallback_cost[i];
+    c.candidate = fallback_id[i];
+  };
+  auto cheapestFallback = [&] {
+    fillFallbackCosts();
+    int best = 0;
+    for (int i = 1; i < num_fallbacks; ++i)
+      if (fallback_cost[i] < fallback_cost[best])
+        best = i;
+    return best;
+  };
+
+  CollapseChoice choice;
+  if (!has_faces || (q_[a].face + q_[b].face).invertible()) {
+    // §8.4 case 1: the optimal sphere m* = A⁻¹b; the midpoint when singular or r < 0 (or, with
+    // a surface, outside it).
+    if ((e_outside_[e] & kOptimumOutside) || !q.minimiser(choice.sphere) ||
+        !(choice.sphere[3] >= 0.0)) {
+      if (num_fallbacks == 3) {
+        choice.sphere = mid;
+        choice.candidate = kMidpoint;
+      }
+      else
+        takeFallback(choice, cheapestFallback());
+    }
+    choice.cost = q(choice.sphere);
+  }
+  else {
+    // §8.4 case 2 (flat or degenerate slabs): the cheapest of the endpoints and the midpoint,
+    // scored with the border terms (the published code dropped them here).
+    takeFallback(choice, cheapestFallback());
+  }
+
+  const double ratio = stabilityRatio(sa, sb);
+  choice.bound = (std::max(0.0, choice.cost) + settings_.k) * ratio * ratio;
+  if (num_tests > 0 && (choice.blockers[0] = flipped(choice.sphere)) >= 0) {
+    // The intended rule (the published code inverted it, §8.4): the cheapest candidate that
+    // flips nothing, else keep m* but defer the collapse to the penalty tier.
+    fillFallbackCosts();
+    int order[3] = {0, 1, 2};
+    std::stable_sort(order, order + num_fallbacks,
+                     [&](int i, int j) { return fallback_cost[i] < fallback_cost[j]; });
+    bool found = false;
+    for (int k = 0; k < num_fallbacks && !found; ++k) {
+      const int i = order[k];
+      choice.blockers[k + 1] = flipped(*fallback[i]);
+      if (choice.blockers[k + 1] < 0) {
+        takeFallback(choice, i);
+        found = true;
+      }
+    }
+    if (!found)
+      choice.tier = 1;
+  }
+  choice.cost = (std::max(0.0, choice.cost) + settings_.k) * ratio * ratio;
+  return choice;
+}
+
+bool
+EdgeCollapser::insideSurface(int from, const Eigen::Vector4d& sphere) const
+{
+  // Sphere centres are inside (the input's by assumption, merged ones by this test), so for a
+  // closed surface counting the faces crossed on the way from one is enough: O(log F).
+  const Eigen::Vector3d start = sphere_[from].head<3>() * scale_ + origin_;
+  const Eigen::Vector3d end = sphere.head<3>() * scale_ + origin_;
+  int change = 0;
+  if (inside_->windingNumberChange(start, end, change))
+    return 1 + change > 0;
+  return inside_->inside(end);
+}
+
+bool
+EdgeCollapser::faceExists(int a, int x, int y) const
+{
+  for (int f : v_faces_[a])
+    if (hasVertex(f, x) && hasVertex(f, y))
+      return true;
+  return false;
+}
+
+bool
+EdgeCollapser::linkCondition(int e)
+{
+  const int a = e_v_[e][0], b = e_v_[e][1];
+  ++stamp_;
+  for (int ea : v_edges_[a])
+    mark_[other(ea, a)] = stamp_;
+  scratch_.clear(); // common neighbours: the vertex part of Lk(a) ∩ Lk(b)
+  for (int eb : v_edges_[b]) {
+    const int x = other(eb, b);
+    if (x != a && mark_[x] == stamp_)
+      scratch_.push_back(x);
+  }
+  // Lk(ab) = third corners of the triangles on ab. Each is a common neighbour (triangle sides
+  // are edges), so equality of the vertex parts is a count comparison.
+  std::size_t on_ab = 0;
+  for (int f : v_faces_[a])
+    if (hasVertex(f, b))
+      ++on_ab;
+  if (on_ab != scratch_.size())
+    return false;
+  // Edge part: Lk(ab) has no edges in a 2-complex, so an edge xy carrying both axy and bxy
+  // violates the condition: the collapse would flatten the hollow tetrahedron abxy, closing one
+  // cavity (b2 − 1) and changing nothing else. Such x, y are common neighbours.
+  if (!settings_.preserve_cavities)
+    return true;
+  for (std::size_t i = 0; i < scratch_.size(); ++i)
+    for (std::size_t j = i + 1; j < scratch_.size(); ++j)
+      if (faceExists(a, scratch_[i], scratch_[j]) && faceExists(b, scratch_[i], scratch_[j]))
+        return false;
+  return true;
+}
+
+void
+EdgeCollapser::removeFrom(std::vector<int>& list, int value)
+{
+  auto it = std::find(list.begin(), list.end(), value);
+  if (it != list.end()) {
+    *it = list.back();
+    list.pop_back();
+  }
+}
+
+void
+EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
+{
+  const int a = e_v_[e][0], b = e_v_[e][1];
+  const int m = static_cast<int>(sphere_.size());
+  sphere_.push_back(target);
+  q_.push_back({q_[a].face + q_[b].face, q_[a].all + q_[b].all});
+  v_alive_.push_back(1);
+  v_edges_.emplace_back();
+  v_faces_.emplace_back();
+  std::vector<int>& m_faces = v_faces_[m];
+  std::vector<int>& m_edges = v_edges_[m];
+  m_faces.reserve(v_faces_[a].size() + v_faces_[b].size());
+  m_edges.reserve(v_edges_[a].size() + v_edges_[b].size());
+
+  // Triangles: those on ab vanish, the others are re-pointed to m. Two of them become one only
+  // when axy and bxy both exist (a cavity closing, see linkCondition); both x and y are then
+  // neighbours of a, marked here.
+  ++stamp_;
+  for (int ea : v_edges_[a])
+    mark_[other(ea, a)] = stamp_;
+  const std::size_t faces_from_a = [&] {
+    std::size_t count = 0;
+    for (int f : v_faces_[a])
+      count += f_alive_[f] && !hasVertex(f, b);
+    return count;
+  }();
+  for (int v : {a, b})
+    for (int f : v_faces_[v]) {
+      if (!f_alive_[f])
+        continue;
+      auto& t = f_v_[f];
+      if (hasVertex(f, a) && hasVertex(f, b)) {
+        f_alive_[f] = 0;
+        const int third = t[0] != a && t[0] != b ? t[0] : (t[1] != a && t[1] != b ? t[1] : t[2]);
+        removeFrom(v_faces_[third], f);
+        continue;
+      }
+      const int k_v = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+      const int x = t[(k_v + 1) % 3], y = t[(k_v + 2) % 3];
+      if (v == b && mark_[x] == stamp_ && mark_[y] == stamp_) {
+        bool duplicate = false;
+        for (std::size_t i = 0; i < faces_from_a && !duplicate; ++i)
+          duplicate = hasVertex(m_faces[i], x) && hasVertex(m_faces[i], y);
+        if (duplicate) {
+          f_alive_[f] = 0;
+          removeFrom(v_faces_[x], f);
+          removeFrom(v_faces_[y], f);
+          continue;
+        }
+      }
+      t[k_v] = m;
+      f_normal_[f] = faceNormal(f);
+      m_faces.push_back(f);
+    }
+
+  // Edges: ab vanishes; ax and bx for a common neighbour x become one edge mx.
+  ++stamp_;
+  e_alive_[e] = 0;
+  for (int v : {a, b})
+    for (int e2 : v_edges_[v]) {
+      if (!e_alive_[e2])
+        continue;
+      const int x = other(e2, v);
+      if (mark_[x] == stamp_) {
+        e_alive_[e2] = 0;
+        heap_.erase(e2);
+        removeFrom(v_edges_[x], e2);
+        continue;
+      }
+      mark_[x] = stamp_;
+      e_v_[e2] = {x, m};
+      e_blocked_[e2] = 0;
+      e_outside_[e2] = 0;
+      m_edges.push_back(e2);
+    }
+
+  v_alive_[a] = v_alive_[b] = 0;
+  std::vector<int>().swap(v_edges_[a]);
+  std::vector<int>().swap(v_edges_[b]);
+  std::vector<int>().swap(v_faces_[a]);
+  std::vector<int>().swap(v_faces_[b]);
+  --alive_count_;
+  ++collapses_;
+
+  // Every triangle around a neighbour of m may have changed: their edges' keys are stale.
+  v_touched_[m] = collapses_;
+  for (int e2 : v_edges_[m])
+    v_touched_[other(e2, m)] = collapses_;
+  for (int e2 : v_edges_[m])
+    pushBound(e2);
+  // Around m: blocked edges get another chance (their link may have changed). Every other key
+  // there is stale (its triangles changed: v_touched_) and re-validated when it reaches the top.
+  // That is exact for keys that can only have risen (an edge's preferred sphere depends on its
+  // own quadrics alone). A key that may have dropped — a triangle that made a cheaper
+  // candidate flip has changed — is lowered to its bound (the cost were nothing to flip), so it
+  // cannot reach the top too late.
+  auto changed = [&](int f) { return f >= 0 && (!f_alive_[f] || hasVertex(f, m)); };
+  for (int e2 : v_edges_[m]) {
+    const int x = other(e2, m);
+    for (int e3 : v_edges_[x]) {
+      if (e_evaluated_[e3] == collapses_)
+        continue; // just evaluated
+      if (e_blocked_[e3]) {
+        e_blocked_[e3] = 0;
+        pushBound(e3);
+        continue;
+      }
+      const auto& bl = e_blockers_[e3];
+      if (changed(bl[0]) || changed(bl[1]) || changed(bl[2]) || changed(bl[3])) {
+        const int ra = output_rank_[e_v_[e3][0]], rb = output_rank_[e_v_[e3][1]];
+        heap_.set(e3, {e_bound_[e3], std::min(ra, rb), std::max(ra, rb), 0});
+        e_blockers_[e3] = {-1, -1, -1, -1};
+        e_verified_[e3] = 0;
+      }
+    }
+  }
+}
+
+void
+EdgeCollapser::push(int e)
+{
+  const CollapseChoice c = evaluate(e);
+  heap_.set(e, keyOf(e, c));
+  e_target_[e] = c.sphere;
+  e_candidate_[e] = c.candidate;
+  e_blockers_[e] = c.blockers;
+  e_bound_[e] = c.bound;
+  e_verified_[e] = 1;
+  e_evaluated_[e] = collapses_;
+}
+
+void
+EdgeCollapser::pushBound(int e)
+{
+  // The flip tests are most of an evaluation and most keys never reach the top: queue the
+  // bound (the cost were nothing to flip) and run them only when it does.
+  const CollapseChoice c = evaluate(e, false);
+  heap_.set(e, keyOf(e, c));
+  e_bound_[e] = c.bound;
+  e_blockers_[e] = {-1, -1, -1, -1};
+  e_verified_[e] = 0;
+  e_evaluated_[e] = collapses_;
+}
+
+std::size_t
+EdgeCollapser::run(std::size_t target)
+{
+  while (alive_count_ > target) {
+    if (heap_.empty()) {
+      if (unblockByHomology())
+        continue;
+      break;
+    }
+    const int e = heap_.topEdge();
+    const int a = e_v_[e][0], b = e_v_[e][1];
+    // A bound is checked for flips now; keys near a collapse go stale: re-validate those.
+    if (!e_verified_[e] || std::max(v_touched_[a], v_touched_[b]) > e_evaluated_[e]) {
+      const QueueKey old = heap_.topKey();
+      push(e);
+      if (old < heap_.topKey() || heap_.topKey() < old || heap_.topEdge() != e)
+        continue;
+    }
+    // With a surface: a new centre (m* or the midpoint) must stay inside it; if not, that
+    // candidate is dropped for this edge and the key recomputed.
+    const std::uint8_t candidate = e_candidate_[e];
+    if (inside_ && (candidate == kOptimum || candidate == kMidpoint) &&
+        !insideSurface(a, e_target_[e])) {
+      e_outside_[e] |= candidate == kOptimum ? kOptimumOutside : kMidpointOutside;
+      push(e);
+      continue;
+    }
+    // Topology last: it is the dearest test, and only a collapse about to happen needs it.
+    if (!linkCondition(e) && !killedCyclesAreBoundaries(e, kPopPatchRings)) {
+      heap_.erase(e);
+      e_blocked_[e] = 1; // retried when its neighbourhood changes
+      continue;
+    }
+    penalised_ += heap_.topKey().tier;
+    heap_.erase(e);
+    collapse(e, e_target_[e]);
+  }
+  return alive_count_;
+}
+
+bool
+EdgeCollapser::unblockByHomology()
+{
+  if (settings_.preserve_cavities)
+    return false;
+  // Every live edge is blocked here (the queue is empty). Try them cheapest first.
+  struct Candidate
+  {
+    QueueKey key;
+    int edge;
+    CollapseChoice choice;
+  };
+  std::vector<Candidate> blocked;
+  for (std::size_t ue = 0; ue < e_v_.size(); ++ue)
+    if (e_alive_[ue]) {
+      const int e = static_cast<int>(ue);
+      CollapseChoice c = evaluate(e);
+      // Same surface rule as in run(): at most two rounds, the ends are inside.
+      while (inside_ && (c.candidate == kOptimum || c.candidate == kMidpoint) &&
+             !insideSurface(e_v_[e][0], c.sphere)) {
+        e_outside_[e] |= c.candidate == kOptimum ? kOptimumOutside : kMidpointOutside;
+        c = evaluate(e);
+      }
+      blocked.push_back({keyOf(e, c), e, c});
+    }
+  std::sort(blocked.begin(), blocked.end(),
+            [](const Candidate& x, const Candidate& y) { return x.key < y.key; });
+  for (const Candidate& candidate : blocked)
+    if (killedCyclesAreBoundaries(candidate.edge, kStuckPatchRings)) {
+      penalised_ += candidate.choice.tier;
+      collapse(candidate.edge, candidate.choice.sphere);
+      return true;
+    }
+  return false;
+}
+
+bool
+EdgeCollapser::killedCyclesAreBoundaries(int e, int rings)
+{
+  // Killing a cycle that bounds creates a cavity: not allowed when cavities are kept.
+  if (settings_.preserve_cavities)
+    return false;
+  const int a = e_v_[e][0], b = e_v_[e][1];
+  // The common neighbours x without a triangle abx: the collapse kills the cycles ab+bx+xa.
+  std::vector<int>& bad = scratch_bad_;
+  bad.clear();
+  ++stamp_;
+  for (int ea : v_edges_[a])
+    mark_[other(ea, a)] = stamp_;
+  for (int eb : v_edges_[b]) {
+    const int x = other(eb, b);
+    if (x != a && mark_[x] == stamp_ && !faceExists(a, b, x))
+      bad.push_back(x);
+  }
+  if (bad.empty())
+    return true;
+  // The usual disk: a cone from a vertex y over the cycle (triangles aby, bxy, axy).
+  auto coneBounds = [&](int x) {
+    for (int f : v_faces_[a]) {
+      if (!hasVertex(f, b))
+        continue;
+      const auto& t = f_v_[f];
+      const int y = t[0] != a && t[0] != b ? t[0] : (t[1] != a && t[1] != b ? t[1] : t[2]);
+      if (faceExists(b, x, y) && faceExists(a, x, y))
+        return true;
+    }
+    return false;
+  };
+  if (std::all_of(bad.begin(), bad.end(), coneBounds))
+    return true;
+  // Otherwise look for a disk in growing neighbourhoods: small disks are the rule.
+  for (int r = 1; r <= rings; ++r)
+    if (cyclesBoundWithin(a, b, r))
+      return true;
+  return false;
+}
+
+bool
+EdgeCollapser::cyclesBoundWithin(int a, int b, int rings)
+{
+  const std::vector<int>& bad = scratch_bad_;
+  // Local patch: vertices within \a rings edges of a or b, and the triangles among them.
+  constexpr std::size_t kMaxPatchFaces = 4096;
+  ++stamp_;
+  std::vector<int>& patch = scratch_patch_;
+  patch.assign({a, b});
+  mark_[a] = mark_[b] = stamp_;
+  for (int ring = 0, begin = 0; ring < rings; ++ring) {
+    const int end = static_cast<int>(patch.size());
+    for (int i = begin; i < end; ++i)
+      for (int e2 : v_edges_[patch[i]]) {
+        const int x = other(e2, patch[i]);
+        if (mark_[x] != stamp_) {
+          mark_[x] = stamp_;
+          patch.push_back(x);
+        }
+      }
+    begin = end;
+  }
+  // Local edge numbering; the faces as GF(2) vectors over it.
+  std::vector<int>& faces = scratch_faces_;
+  faces.clear();
+  for (int v : patch)
+    for (int f : v_faces_[v]) {
+      const auto& t = f_v_[f];
+      if (mark_[t[0]] == stamp_ && mark_[t[1]] == stamp_ && mark_[t[2]] == stamp_ &&
+          std::min({t[0], t[1], t[2]}) == v) // each face once, from its smallest corner
+        faces.push_back(f);
+    }
+  if (faces.size() > kMaxPatchFaces)
+    return false; // too big to decide cheaply: stay on the safe side
+  std::vector<std::uint64_t>& keys = scratch_keys_;
+  keys.clear();
+  auto key = [](int p, int q) {
+    return (static_cast<std::uint64_t>(std::min(p, q)) << 32) |
+           static_cast<std::uint32_t>(std::max(p, q));
+  };
+  for (int f : faces)
+    for (int k = 0; k < 3; ++k)
+      keys.push_back(key(f_v_[f][k], f_v_[f][(k + 1) % 3]));
+  for (int x : bad) {
+    keys.push_back(key(a, x));
+    keys.push_back(key(b, x));
+  }
+  keys.push_back(key(a, b));
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  auto bitOf = [&](int p, int q) {
+    return static_cast<std::size_t>(std::lower_bound(keys.begin(), keys.end(), key(p, q)) -
+                                    keys.begin());
+  };
+  Gf2Span& span = scratch_span_;
+  span.reset(keys.size());
+  for (int f : faces) {
+    std::uint64_t* v = span.scratch();
+    for (int k = 0; k < 3; ++k)
+      Gf2Span::flip(v, bitOf(f_v_[f][k], f_v_[f][(k + 1) % 3]));
+    span.insertScratch();
+  }
+  for (int x : bad) {
+    std::uint64_t* z = span.scratch();
+    Gf2Span::flip(z, bitOf(a, b));
+    Gf2Span::flip(z, bitOf(b, x));
+    Gf2Span::flip(z, bitOf(x, a));
+    if (!span.scratchInSpan())
+      return false; // not a boundary in the patch: may be a tunnel or hole
+  }
+  return true;
+}
+
+MedialMesh
+EdgeCollapser::extract() const
+{
+  // Survivors in input order, then merged spheres in merge order; edges and triangles in input
+  // order (all of them are input elements, re-pointed).
+  std::vector<int> by_rank(sphere_.size(), -1);
+  for (std::size_t v = 0; v < sphere_.size(); ++v)
+    if (v_alive_[v])
+      by_rank[output_rank_[v]] = static_cast<int>(v);
+  std::vector<int> index(sphere_.size(), -1);
+  std::vector<Eigen::Vector3d> centers;
+  std::vector<double> radii;
+  centers.reserve(alive_count_);
+  radii.reserve(alive_count_);
+  for (int v : by_rank) {
+    if (v < 0)
+      continue;
+    index[v] = static_cast<int>(centers.size());
+    centers.push_back(sphere_[v].head<3>() * scale_ + origin_);
+    radii.push_back(std::max(0.0, sphere_[v][3] * scale_));
+  }
+  std::vector<std::pair<int, Eigen::Vector2i>> edges;
+  for (std::size_t e = 0; e < e_v_.size(); ++e)
+    if (e_alive_[e])
+      edges.push_back({e_orig_[e], Eigen::Vector2i(index[e_v_[e][0]], index[e_v_[e][1]])});
+  std::sort(edges.begin(), edges.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<std::pair<int, Eigen::Vector3i>> triangles;
+  for (std::size_t f = 0; f < f_v_.size(); ++f)
+    if (f_alive_[f]) {
+      std::array<int, 3> t = {index[f_v_[f][0]], index[f_v_[f][1]], index[f_v_[f][2]]};
+      std::sort(t.begin(), t.end()); // Q-MAT writes ascending corners; winding means nothing
+      triangles.push_back({f_orig_[f], Eigen::Vector3i(t[0], t[1], t[2])});
+    }
+  std::sort(triangles.begin(), triangles.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<Eigen::Vector2i> edge_list;
+  edge_list.reserve(edges.size());
+  for (const auto& e : edges)
+    edge_list.push_back(e.second);
+  std::vector<Eigen::Vector3i> triangle_list;
+  triangle_list.reserve(triangles.size());
+  for (const auto& t : triangles)
+    triangle_list.push_back(t.second);
+  return MedialMesh(std::move(centers), std::move(radii), edge_list, triangle_list);
+}
+
+} // namespace
+
+QmatSimplification::QmatSimplification()
+: normalisation_scale_(0.0)
+, base_target_(2000)
+, structured_target_(-1)
+, k_(1e-5)
+, boundary_weight_(0.1)
+, prevent_inversion_(true)
+, preserve_cavities_(false)
+, threads_(1)
+{}
+
+bool
+QmatSimplification::compute(MedialMesh& base, MedialMesh& structured)
+{
+  base = MedialMesh();
+  structured = MedialMesh();
+  initial_count_ = 0;
+  resolved_structured_target_ = 0;
+  collapse_count_ = 0;
+  penalised_collapse_count_ = 0;
+  if (!input_ || input_->empty()) {
+    PCL_ERROR("[segmat::QmatSimplification::compute] no input medial mesh (or it is empty)\n");
+    return false;
+  }
+  if (base_target_ < 1 || (structured_target_ < 1 && structured_target_ != -1)) {
+    PCL_ERROR("[segmat::QmatSimplification::compute] invalid targets: base %d, structured %d "
+              "(need >= 1, structured may be -1)\n",
+              base_target_, structured_target_);
+    return false;
+  }
+  if (!(k_ >= 0.0) || !std::isfinite(k_) || !(boundary_weight_ >= 0.0) ||
+      !std::isfinite(boundary_weight_)) {
+    PCL_ERROR("[segmat::QmatSimplification::compute] k and the boundary weight must be finite "
+              "and >= 0\n");
+    return false;
+  }
+  const MedialMesh& mat = *input_;
+  const std::size_t input_count = mat.numVertices();
+  resolved_structured_target_ =
+      structured_target_ > 0
+          ? structured_target_
+          : std::max(15, static_cast<int>(0.001 * static_cast<double>(input_count)));
+
+  // Normalised coordinates: centred on the centres' bounding box, divided by the scale.
+  Eigen::Vector3d lo = mat.centers().front(), hi = lo;
+  for (const Eigen::Vector3d& c : mat.centers()) {
+    lo = lo.cwiseMin(c);
+    hi = hi.cwiseMax(c);
+  }
+  double scale = normalisation_scale_;
+  if ((!(scale > 0.0) || !std::isfinite(scale)) && surface_)
+    scale = surface_->boundingBoxDiagonal();
+  if (!(scale > 0.0) || !std::isfinite(scale))
+    scale = (hi - lo).norm();
+  if (!(scale > 0.0))
+    scale = 1.0;
+
+  std::unique_ptr<WindingNumber> inside;
+  if (surface_ && !surface_->empty())
+    inside = std::make_unique<WindingNumber>(*surface_);
+  const Settings settings{k_, boundary_weight_, prevent_inversion_, preserve_cavities_, threads_};
+  EdgeCollapser collapser(mat, 0.5 * (lo + hi), scale, settings, inside.get());
+  initial_count_ = collapser.aliveCount();
+  if (initial_count_ == 0) {
+    PCL_ERROR("[segmat::QmatSimplification::compute] the medial mesh has no edges\n");
+    return false;
+  }
+
+  const std::size_t base_target = static_cast<std::size_t>(base_target_);
+  const bool stuck = collapser.run(base_target) > base_target;
+  if (stuck)
+    PCL_WARN("[segmat::QmatSimplification::compute] base target %d not reached: every further "
+             "collapse changes the topology; %zu spheres kept\n",
+             base_target_, collapser.aliveCount());
+  base = collapser.extract();
+
+  const std::size_t structured_target = static_cast<std::size_t>(resolved_structured_target_);
+  if (!stuck && structured_target < collapser.aliveCount() &&
+      collapser.run(structured_target) > structured_target)
+    PCL_WARN("[segmat::QmatSimplification::compute] structured target %d not reached: every "
+             "further collapse changes the topology; %zu spheres kept\n",
+             resolved_structured_target_, collapser.aliveCount());
+  structured = collapser.extract();
+  collapse_count_ = collapser.collapses();
+  penalised_collapse_count_ = collapser.penalisedCollapses();
+  return true;
+}
+
+} // namespace segmat
