@@ -135,3 +135,21 @@ TEST(StructureTags, TeddyHasNoThinPart)
   EXPECT_EQ(tags.numThinParts(), 0);
   EXPECT_EQ(tags.node_tag, std::vector<int>(3747, 0));
 }
+
+TEST(StructureTags, BranchSphereRadiusDoesNotMakeALineBulky)
+{
+  // A fat sheet (radius 2; ρ = √4 / 2 = 1: normal) with a line of 4 pure edges (radius 0.5,
+  // L = 8) growing out of its corner sphere 0 — a finger on a palm. Sphere 0 is shared by two
+  // triangles and one edge (a branch point), so its radius 2 is the palm's, not the finger's:
+  // ρ = 8 / 0.5 = 16 > 8 (thin, log2 16 = 4). The reference's r_max over all endpoints gave
+  // 8 / 2 = 4 (normal).
+  std::vector<Eigen::Vector3d> c{{0, -1, 0}, {-2, -1, 0}, {-2, 1, 0}, {0, 1, 0},
+                                 {2, -1, 0}, {4, -1, 0},  {6, -1, 0}, {8, -1, 0}};
+  const MedialMesh s(c, {2, 2, 2, 2, 0.5, 0.5, 0.5, 0.5}, {{0, 4}, {4, 5}, {5, 6}, {6, 7}},
+                     {{0, 1, 2}, {0, 2, 3}});
+  const MatGraph base = probes({{5.0, -0.8, 0}, {-1, 0, 0.2}});
+  const StructureTags tags = computeStructureTags(s, base);
+  ASSERT_EQ(tags.numThinParts(), 1);
+  EXPECT_DOUBLE_EQ(tags.tag_ratio[1], 4.0);
+  EXPECT_EQ(tags.node_tag, (std::vector<int>{1, 0}));
+}

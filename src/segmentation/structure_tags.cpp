@@ -81,20 +81,24 @@ structurallyConnected(const MedialMesh& s, const std::vector<int>& point_share,
 
 /** ρ of a component, or NaN when the component takes no part (dropped line, zero radius). */
 double
-slendernessRatio(const MedialMesh& s, const std::vector<StructureNode>& nodes,
-                 const std::vector<int>& component, bool& is_manifold_sheet)
+slendernessRatio(const MedialMesh& s, const std::vector<int>& point_share,
+                 const std::vector<StructureNode>& nodes, const std::vector<int>& component,
+                 bool& is_manifold_sheet)
 {
   const auto& c = s.centers();
   const auto& r = s.radii();
   const bool is_line = nodes[component.front()].is_line;
-  double r_max = 0.0, measure = 0.0;
+  double r_max = 0.0, r_max_inner = 0.0, measure = 0.0;
   is_manifold_sheet = !is_line;
   std::vector<std::pair<int, int>> sides; // sheet edges, to find one used >= 3 times
   for (int i : component) {
     const Eigen::Vector3i& v = nodes[i].v;
     const int n = is_line ? 2 : 3;
-    for (int k = 0; k < n; ++k)
+    for (int k = 0; k < n; ++k) {
       r_max = std::max(r_max, r[v[k]]);
+      if (point_share[v[k]] <= 2)
+        r_max_inner = std::max(r_max_inner, r[v[k]]);
+    }
     if (is_line) {
       measure += (c[v[1]] - c[v[0]]).norm();
     }
@@ -108,7 +112,11 @@ slendernessRatio(const MedialMesh& s, const std::vector<StructureNode>& nodes,
   if (!(r_max > 0.0))
     return std::numeric_limits<double>::quiet_NaN();
   if (is_line) {
-    const double rho = measure / r_max;
+    // Deviation from the reference (r_max over all endpoints): a line's branch-point spheres
+    // (shared by 3+ structure nodes) sit where it joins the body, so their radius measures the
+    // body's thickness, not the appendage's. Counting them made fingers, legs and fins "bulky"
+    // (ρ < 8) on our structured MATs; r_max is taken over the line's own spheres when it has any.
+    const double rho = measure / (r_max_inner > 0.0 ? r_max_inner : r_max);
     return rho > kDroppedLineRatio ? std::numeric_limits<double>::quiet_NaN() : rho;
   }
   std::sort(sides.begin(), sides.end());
@@ -180,7 +188,7 @@ computeStructureTags(const MedialMesh& structured, const MatGraph& base)
           }
     }
     bool manifold_sheet = false;
-    const double rho = slendernessRatio(structured, nodes, component, manifold_sheet);
+    const double rho = slendernessRatio(structured, point_share, nodes, component, manifold_sheet);
     if (std::isnan(rho))
       continue;
     const bool is_line = nodes[component.front()].is_line;

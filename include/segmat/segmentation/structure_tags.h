@@ -38,6 +38,8 @@ struct StructureTags
  * The structured MAT (~15–40 spheres) is cut into components: lines are cut at branch points
  * unless the two lines are nearly collinear (|cos| > 0.95), sheets at non-manifold edges, and a
  * line never joins a sheet. A line component with ρ = L / r_max > 100 is dropped; ρ > 8 is thin.
+ * For a line, r_max leaves out its branch-point spheres (shared by 3+ structure nodes) when it
+ * has other spheres: they belong to the body it grows from (a deviation from the reference).
  * A sheet component is thin when it is manifold and ρ = √A / r_max > 8. Every kept component is
  * densified (13 steps) and each base node takes the tag of the component owning the nearest
  * densified point to its centroid (ties: the first thin part).
