@@ -130,10 +130,19 @@ WindingNumber::WindingNumber(const TriangleMesh& input, bool fix_orientation)
     triangles_[i] = triangles[order[i]];
     corner_ids_[i] = ids[order[i]];
   }
+  face_normals_.resize(n);
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Matrix3d& t = triangles_[i];
+    const Eigen::Vector3d normal = (t.col(1) - t.col(0)).cross(t.col(2) - t.col(0));
+    face_normals_[i] << normal, normal.norm();
+  }
   computeMoments();
   boxes_.resize(nodes_.size());
   for (std::size_t id = 0; id < nodes_.size(); ++id) {
     Box& box = boxes_[id];
+    box.begin = nodes_[id].begin;
+    box.end = nodes_[id].end;
+    box.right = nodes_[id].right;
     box.lo = box.hi = triangles_[nodes_[id].begin].col(0);
     for (int i = nodes_[id].begin; i < nodes_[id].end; ++i) {
       box.lo = box.lo.cwiseMin(triangles_[i].rowwise().minCoeff());
@@ -319,7 +328,6 @@ WindingNumber::windingNumberChange(const Eigen::Vector3d& from, const Eigen::Vec
   stack[top++] = 0;
   while (top > 0) {
     const int id = stack[--top];
-    const Node& node = nodes_[id];
     const Box& box = boxes_[id];
     // Skip nodes whose box misses the segment's box, or that the segment misses (slab test).
     if ((box.lo.array() > seg_hi.array()).any() || (box.hi.array() < seg_lo.array()).any())
@@ -337,15 +345,15 @@ WindingNumber::windingNumberChange(const Eigen::Vector3d& from, const Eigen::Vec
     }
     if (t_min > t_max)
       continue;
-    if (node.right >= 0) {
-      stack[top++] = node.right;
+    if (box.right >= 0) {
+      stack[top++] = box.right;
       stack[top++] = id + 1;
       continue;
     }
-    for (int i = node.begin; i < node.end; ++i) {
+    for (int i = box.begin; i < box.end; ++i) {
       const Eigen::Matrix3d& t = triangles_[i];
-      const Eigen::Vector3d normal = (t.col(1) - t.col(0)).cross(t.col(2) - t.col(0));
-      const double normal_length = normal.norm();
+      const Eigen::Vector3d normal = face_normals_[i].head<3>();
+      const double normal_length = face_normals_[i][3];
       // Signed distances of the end points to the face's plane.
       const double dist_from = normal.dot(from - t.col(0)) / normal_length;
       const double dist_to = normal.dot(to - t.col(0)) / normal_length;

@@ -303,6 +303,10 @@ private:
   void push(int e);
   void pushBound(int e);
   static void removeFrom(std::vector<int>& list, int value);
+  /** An empty list, reusing a dead vertex's buffer when one is spare. */
+  std::vector<int> recycledList();
+  /** Empties \a list, keeping its buffer for recycledList() (a few, not all of them). */
+  void recycleList(std::vector<int>& list);
 
   Settings settings_;
   Eigen::Vector3d origin_;
@@ -349,6 +353,9 @@ private:
   std::vector<int> scratch_bad_, scratch_patch_, scratch_faces_;
   std::vector<std::uint64_t> scratch_keys_;
   Gf2Span scratch_span_;
+  /// Buffers of dead vertices' lists: each collapse frees four lists and needs two, and
+  /// malloc/free of them was a visible share of the collapse loop.
+  std::vector<std::vector<int>> spare_lists_;
 };
 
 EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origin, double scale,
@@ -419,16 +426,29 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
   v_faces_.resize(n);
 
   // Edges and triangles in the order of their smallest internal corner, for the same reason.
-  auto sortedBySmallestCorner = [](std::size_t count, auto corners) {
-    std::vector<std::pair<std::array<int, 3>, int>> keyed(count);
+  // Ids sorted by (ascending corner triple, id). Corners lie in [-1, n), so three stable
+  // counting-sort passes (last corner first) give that order in O(count + n), where a
+  // comparison sort of the triples was a visible share of the set-up.
+  auto sortedBySmallestCorner = [n](std::size_t count, auto corners) {
+    std::vector<std::array<int, 3>> sorted(count);
     for (std::size_t i = 0; i < count; ++i) {
-      keyed[i] = {corners(i), static_cast<int>(i)};
-      std::sort(keyed[i].first.begin(), keyed[i].first.end());
+      sorted[i] = corners(i);
+      std::sort(sorted[i].begin(), sorted[i].end());
     }
-    std::sort(keyed.begin(), keyed.end());
-    std::vector<int> ids(count);
+    std::vector<int> ids(count), next(count);
     for (std::size_t i = 0; i < count; ++i)
-      ids[i] = keyed[i].second;
+      ids[i] = static_cast<int>(i);
+    std::vector<std::size_t> start(static_cast<std::size_t>(n) + 2);
+    for (int k = 2; k >= 0; --k) {
+      std::fill(start.begin(), start.end(), 0);
+      for (std::size_t i = 0; i < count; ++i)
+        ++start[sorted[i][k] + 2]; // bucket of corner c starts at start[c + 1]
+      for (std::size_t c = 1; c < start.size(); ++c)
+        start[c] += start[c - 1];
+      for (int id : ids)
+        next[start[sorted[id][k] + 1]++] = id;
+      ids.swap(next);
+    }
     return ids;
   };
   e_orig_ = sortedBySmallestCorner(mat.numEdges(), [&](std::size_t e) {
@@ -472,23 +492,26 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
 
   buildQuadrics();
 
-  // Every edge's first cost; independent per edge, so threads cannot change the result.
+  // Every edge's first cost; independent per edge, so threads cannot change the result. Only
+  // the keys are buffered (the rest goes straight to the per-edge arrays): a full CollapseChoice
+  // per edge was megabytes of fresh pages to fault in.
   const int num_edges = static_cast<int>(e_v_.size());
-  std::vector<CollapseChoice> first(num_edges);
+  std::vector<QueueKey> first_key(num_edges);
 #ifdef _OPENMP
   const int threads =
       settings_.threads > 0 ? static_cast<int>(settings_.threads) : omp_get_max_threads();
 #endif
 #pragma omp parallel for schedule(static) num_threads(threads)
-  for (int e = 0; e < num_edges; ++e)
-    first[e] = evaluate(e, false);
-  heap_ = EdgeHeap(e_v_.size());
   for (int e = 0; e < num_edges; ++e) {
-    heap_.set(e, keyOf(e, first[e]));
-    e_target_[e] = first[e].sphere;
-    e_blockers_[e] = first[e].blockers;
-    e_bound_[e] = first[e].bound;
+    const CollapseChoice c = evaluate(e, false);
+    first_key[e] = keyOf(e, c);
+    e_target_[e] = c.sphere;
+    e_blockers_[e] = c.blockers;
+    e_bound_[e] = c.bound;
   }
+  heap_ = EdgeHeap(e_v_.size());
+  for (int e = 0; e < num_edges; ++e)
+    heap_.set(e, first_key[e]);
 }
 
 Eigen::Vector3d
@@ -797,6 +820,27 @@ EdgeCollapser::removeFrom(std::vector<int>& list, int value)
   }
 }
 
+std::vector<int>
+EdgeCollapser::recycledList()
+{
+  if (spare_lists_.empty())
+    return {};
+  std::vector<int> list = std::move(spare_lists_.back());
+  spare_lists_.pop_back();
+  return list;
+}
+
+void
+EdgeCollapser::recycleList(std::vector<int>& list)
+{
+  constexpr std::size_t kMaxSpareLists = 64;
+  if (spare_lists_.size() < kMaxSpareLists && list.capacity() > 0) {
+    list.clear();
+    spare_lists_.push_back(std::move(list));
+  }
+  std::vector<int>().swap(list); // dead vertices hold no memory
+}
+
 void
 EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
 {
@@ -805,8 +849,8 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
   sphere_.push_back(target);
   q_.push_back({q_[a].face + q_[b].face, q_[a].all + q_[b].all});
   v_alive_.push_back(1);
-  v_edges_.emplace_back();
-  v_faces_.emplace_back();
+  v_edges_.push_back(recycledList());
+  v_faces_.push_back(recycledList());
   std::vector<int>& m_faces = v_faces_[m];
   std::vector<int>& m_edges = v_edges_[m];
   m_faces.reserve(v_faces_[a].size() + v_faces_[b].size());
@@ -875,10 +919,8 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
     }
 
   v_alive_[a] = v_alive_[b] = 0;
-  std::vector<int>().swap(v_edges_[a]);
-  std::vector<int>().swap(v_edges_[b]);
-  std::vector<int>().swap(v_faces_[a]);
-  std::vector<int>().swap(v_faces_[b]);
+  for (std::vector<int>* list : {&v_edges_[a], &v_edges_[b], &v_faces_[a], &v_faces_[b]})
+    recycleList(*list);
   --alive_count_;
   ++collapses_;
 

@@ -150,15 +150,20 @@ private:
   int
   build(int begin, int end, std::vector<Eigen::Vector3d>& centroids, std::vector<int>& order);
 
-  /** Axis-aligned box of a node, kept apart from the moments so that segment queries touch
-   * little memory. */
+  /** Axis-aligned box of a node with its face range and right child (copies of the Node's),
+   * kept apart from the ~400-byte moments so that a segment query's traversal reads one 64-byte
+   * record per node. */
   struct Box
   {
     Eigen::Vector3d lo, hi;
+    int begin = 0, end = 0; ///< face range [begin, end)
+    int right = -1;         ///< right child (left is this + 1); -1: leaf
   };
 
   std::vector<Box> boxes_;                 ///< per node, same indices as nodes_
   std::vector<Eigen::Matrix3d> triangles_; ///< corners as columns, in hierarchy order
+  /// (t1 − t0) × (t2 − t0) and its length per face, precomputed for segment queries
+  std::vector<Eigen::Vector4d> face_normals_;
   std::vector<Eigen::Vector3i> corner_ids_; ///< welded vertex index of each corner
   double size_ = 0.0;                        ///< bounding-box diagonal of the faces
   bool closed_ = false;
