@@ -14,6 +14,7 @@
 #include "bench_args.h"
 
 #include <segmat/common/error.h>
+#include <segmat/geometry/winding_number.h>
 #include <segmat/io/mesh.h>
 #include <segmat/medial/qmat_simplification.h>
 #include <segmat/medial/voronoi_mat.h>
@@ -105,12 +106,19 @@ main(int argc, char** argv)
     segmat::MedialMesh base, structured;
     std::size_t samples = 0;
     bool ok = true;
+    // As MedialMeshEstimation: one winding-number hierarchy, built (and timed) with the initial
+    // MAT, serves both stages.
+    segmat::WindingNumber::ConstPtr winding_number;
     for (int r = 0; r < runs && ok; ++r) {
       segmat::VoronoiMat voronoi;
       voronoi.setInputMesh(mesh);
       if (max_samples >= 0)
         voronoi.setMaxSampleCount(static_cast<std::size_t>(max_samples));
-      const Timing t = timeIt([&] { ok = voronoi.compute(*initial); });
+      const Timing t = timeIt([&] {
+        winding_number = std::make_shared<const segmat::WindingNumber>(*mesh);
+        voronoi.setWindingNumber(winding_number);
+        ok = voronoi.compute(*initial);
+      });
       samples = voronoi.getStatistics().num_samples;
       ic.push_back(t.cpu);
       iw.push_back(t.wall);
@@ -118,8 +126,10 @@ main(int argc, char** argv)
     for (int r = 0; r < runs && ok; ++r) {
       segmat::QmatSimplification qmat;
       qmat.setInputMat(initial);
-      if (keep_inside)
+      if (keep_inside) {
         qmat.setInputSurface(mesh); // as MedialMeshEstimation: keeps centres inside
+        qmat.setWindingNumber(winding_number);
+      }
       else
         qmat.setNormalisationScale(mesh->boundingBoxDiagonal());
       qmat.setBaseTarget(base_target);

@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <segmat/medial/medial_mesh_estimation.h>
+#include <segmat/geometry/winding_number.h>
 #include <segmat/medial/qmat_simplification.h>
 
 #include <pcl/console/print.h>
@@ -26,8 +27,13 @@ MedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
     return false;
   }
 
+  // One winding-number hierarchy serves VoronoiMat's inside test and Q-MAT's centre test.
+  auto winding_number = std::make_shared<WindingNumber>(*mesh_);
+  winding_number->setAccuracy(voronoi_.getWindingNumberAccuracy());
   voronoi_.setInputMesh(mesh_);
+  voronoi_.setWindingNumber(winding_number);
   const bool voronoi_ok = voronoi_.compute(*initial_);
+  voronoi_.setWindingNumber(nullptr); // voronoi_ is a member: do not keep the hierarchy alive
   statistics_.voronoi = voronoi_.getStatistics();
   statistics_.initial_spheres = initial_->numVertices();
   const auto after_voronoi = Clock::now();
@@ -44,7 +50,10 @@ MedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
   QmatSimplification qmat;
   qmat.setInputMat(initial_);
   if (keep_centres_inside_)
+  {
     qmat.setInputSurface(mesh_); // normalisation by its diagonal; merged centres stay inside
+    qmat.setWindingNumber(winding_number);
+  }
   else
     qmat.setNormalisationScale(mesh_->boundingBoxDiagonal()); // Q-MAT's normalisation
   qmat.setBaseTarget(simplification_base_target_);

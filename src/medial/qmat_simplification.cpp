@@ -1280,9 +1280,9 @@ QmatSimplification::compute(MedialMesh& base, MedialMesh& structured)
   if (!(scale > 0.0))
     scale = 1.0;
 
-  std::unique_ptr<WindingNumber> inside;
+  std::shared_ptr<const WindingNumber> inside;
   if (surface_ && !surface_->empty())
-    inside = std::make_unique<WindingNumber>(*surface_);
+    inside = winding_number_ ? winding_number_ : std::make_shared<const WindingNumber>(*surface_);
   const Settings settings{k_, boundary_weight_, prevent_inversion_, preserve_cavities_, threads_};
   EdgeCollapser collapser(mat, 0.5 * (lo + hi), scale, settings, inside.get());
   initial_count_ = collapser.aliveCount();

@@ -105,13 +105,11 @@ usedVertexBounds(const TriangleMesh& mesh, Eigen::AlignedBox3d& bounds)
  * \param[out] evaluations how many winding numbers were evaluated
  */
 std::vector<char>
-classifyTetrahedra(const TriangleMesh& mesh, const DelaunayTetrahedra& delaunay,
+classifyTetrahedra(const WindingNumber& winding_number, const DelaunayTetrahedra& delaunay,
                    const std::vector<Eigen::Vector3d>& centres, const std::vector<int>& candidates,
-                   double beta, unsigned threads, std::size_t& evaluations)
+                   unsigned threads, std::size_t& evaluations)
 {
   const int num_tets = static_cast<int>(delaunay.tetrahedra.size());
-  WindingNumber winding_number(mesh);
-  winding_number.setAccuracy(beta);
   std::vector<char> inside(num_tets, 0);
   evaluations = 0;
   if (!winding_number.isClosed()) {
@@ -334,8 +332,14 @@ VoronoiMat::compute(MedialMesh& output)
         bounds.contains(centres[t]))
       candidates.push_back(t);
   }
+  std::shared_ptr<const WindingNumber> winding_number = winding_number_;
+  if (!winding_number) {
+    auto own = std::make_shared<WindingNumber>(mesh);
+    own->setAccuracy(beta_);
+    winding_number = std::move(own);
+  }
   const std::vector<char> inside = classifyTetrahedra(
-      mesh, delaunay, centres, candidates, beta_, threads_, statistics_.num_winding_evaluations);
+      *winding_number, delaunay, centres, candidates, threads_, statistics_.num_winding_evaluations);
   std::vector<int> vertex_of(num_tets, -1);
   std::vector<Eigen::Vector3d> mat_centres;
   std::vector<double> mat_radii;

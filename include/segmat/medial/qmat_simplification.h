@@ -9,8 +9,11 @@
 
 #include <cstddef>
 #include <memory>
+#include <utility>
 
 namespace segmat {
+
+class WindingNumber;
 
 /** \brief Q-MAT simplification of a medial mesh (Li et al., "Q-MAT: Computing Medial Axis
  * Transform by Quadratic Error Minimization", ACM TOG 2015) to SEG-MAT's two MATs: the *base*
@@ -87,6 +90,15 @@ public:
   /** \brief The surface (may be null). */
   const TriangleMesh::ConstPtr& getInputSurface() const { return surface_; }
 
+  /** \brief Winding-number hierarchy of the input surface to use for the inside test instead
+   * of building one in compute() (e.g. the one VoronoiMat used). It must have been built from
+   * the surface given to setInputSurface() with the default orientation repair; its accuracy
+   * applies where the face count is uncertain. Ignored without a surface. Null (the default)
+   * builds one per compute(). \param[in] winding_number the hierarchy, or null */
+  void setWindingNumber(std::shared_ptr<const WindingNumber> winding_number) { winding_number_ = std::move(winding_number); }
+  /** \brief The shared winding-number hierarchy (null unless set). */
+  const std::shared_ptr<const WindingNumber>& getWindingNumber() const { return winding_number_; }
+
   /** \brief Length by which centres and radii are divided while simplifying (Q-MAT: the surface
    * mesh's bounding-box diagonal). \param[in] scale > 0, or <= 0 to use the surface's diagonal
    * when a surface is set, else the diagonal of the bounding box of the MAT centres. */
@@ -160,6 +172,7 @@ public:
 private:
   MedialMesh::ConstPtr input_;
   TriangleMesh::ConstPtr surface_;
+  std::shared_ptr<const WindingNumber> winding_number_; ///< shared hierarchy of surface_, or null
   double normalisation_scale_;
   int base_target_;
   int structured_target_;

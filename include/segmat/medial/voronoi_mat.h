@@ -13,9 +13,12 @@
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace segmat {
+
+class WindingNumber;
 
 /** \brief Sizes and per-stage wall-clock times of one VoronoiMat::compute run. */
 struct VoronoiMatStatistics
@@ -174,6 +177,25 @@ public:
     return beta_;
   }
 
+  /** \brief Winding-number hierarchy of the input mesh to use for the inside test instead of
+   * building one in compute() (saves its O(F log F) construction when another stage, such as
+   * QmatSimplification, needs the same one). It must have been built from the input mesh with
+   * the default orientation repair; its own accuracy (WindingNumber::setAccuracy) then replaces
+   * setWindingNumberAccuracy(). Null (the default) builds one per compute().
+   * \param[in] winding_number the hierarchy, or null */
+  void
+  setWindingNumber(std::shared_ptr<const WindingNumber> winding_number)
+  {
+    winding_number_ = std::move(winding_number);
+  }
+
+  /** \brief The shared winding-number hierarchy (null unless set). */
+  const std::shared_ptr<const WindingNumber>&
+  getWindingNumber() const
+  {
+    return winding_number_;
+  }
+
   /** \brief Threads for the inside test (default 1; 0: OpenMP's default). The output does not
    * depend on it. */
   void
@@ -225,6 +247,7 @@ private:
   tetrahedralize(DelaunayTetrahedra& delaunay);
 
   TriangleMesh::ConstPtr mesh_;
+  std::shared_ptr<const WindingNumber> winding_number_; ///< shared hierarchy, or null
   double max_spacing_;
   std::size_t max_samples_;
   double jitter_;
