@@ -13,6 +13,7 @@
 #include <pcl/console/print.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 using namespace segmat;
@@ -373,15 +374,16 @@ TEST(MatRegionGrowing, PointGraphSplitsAtAFold)
 
 TEST(MatRegionGrowing, ThinTagsRaiseTheThresholdAndTagChangesStopGrowth)
 {
-  // A straight chain of 40 cones whose radius grows by 3% per sphere: consecutive cones have
-  // C_r = 0.03 and C_mp ≈ 1 (A, B slightly below 1), so the cost is 0.03: above δ0 = 0.015 but
-  // below δ0·log2(16) = 0.06 inside a thin part.
+  // A straight chain of 40 cones whose radius grows by 2.5% per sphere: consecutive cones have
+  // C_r = 0.025 and C_mp ≈ 1 (A, B slightly below 1), so the cost is 0.025: above δ0 = 0.015 but
+  // below δ0·log2(16) = 0.06 inside a thin part. The whole chain tapers by 1.025^40 = 2.69,
+  // less than the seed-radius guard's 3 (3% per sphere would taper by 3.26 and be split).
   SyntheticMat m;
   std::vector<Eigen::Vector3d> pts;
   std::vector<double> radii;
   for (int k = 0; k <= 40; ++k) {
     pts.emplace_back(0.1 * k, 0, 0);
-    radii.push_back(0.2 * std::pow(1.03, k));
+    radii.push_back(0.2 * std::pow(1.025, k));
   }
   m.addChain(-1, pts, radii);
   const auto graph = graphOf(m.build());
@@ -404,6 +406,39 @@ TEST(MatRegionGrowing, ThinTagsRaiseTheThresholdAndTagChangesStopGrowth)
   cyl.addChain(-1, pts, std::vector<double>(pts.size(), 0.2));
   const Result across = segment(graphOf(cyl.build()), {}, &thin);
   EXPECT_EQ(across.grown, std::vector<int>{40});
+}
+
+TEST(MatRegionGrowing, SeedRadiusRatioStopsDriftDownATaper)
+{
+  // A straight chain of 150 spheres whose radius shrinks by 1 % per sphere: every step costs
+  // C_r = 1/0.99 − 1 ≈ 0.0101 <= δ0, so the local test alone grows all 149 cones from the
+  // thickest one. Cone k has mean radius 0.99^k times the seed's; with the default ratio 3 it
+  // may join while 0.99^k >= 1/3, i.e. k <= 109 (0.99^109 = 0.334, 0.99^110 = 0.331): 110
+  // cones. Cone 110 shares sphere 110 with the region and is swallowed; cones 111..148 (38)
+  // grow from the next seed.
+  SyntheticMat m;
+  std::vector<Eigen::Vector3d> pts;
+  std::vector<double> radii;
+  for (int k = 0; k < 150; ++k) {
+    pts.emplace_back(0.1 * k, 0, 0);
+    radii.push_back(0.2 * std::pow(0.99, k));
+  }
+  m.addChain(-1, pts, radii);
+  const auto graph = graphOf(m.build());
+  ASSERT_EQ(graph->numNodes(), 149u);
+  MatRegionGrowing grower;
+  EXPECT_EQ(grower.getMaxSeedRadiusRatio(), 3.0);
+  grower.setInputGraph(graph);
+  std::vector<pcl::PointIndices> parts;
+  ASSERT_TRUE(grower.extract(parts));
+  EXPECT_EQ(grower.getGrownRegionSizes(), (std::vector<int>{110, 38}));
+  // Disabled (the reference's rule): one region.
+  grower.setMaxSeedRadiusRatio(std::numeric_limits<double>::infinity());
+  ASSERT_TRUE(grower.extract(parts));
+  EXPECT_EQ(grower.getGrownRegionSizes(), std::vector<int>{149});
+  // Below 1 a seed could not even keep itself: rejected, the old value stays.
+  grower.setMaxSeedRadiusRatio(0.5);
+  EXPECT_EQ(grower.getMaxSeedRadiusRatio(), std::numeric_limits<double>::infinity());
 }
 
 TEST(MatRegionGrowing, DeterministicAcrossRunsAndSeeds)

@@ -219,6 +219,7 @@ MatRegionGrowing::MatRegionGrowing()
 , lambda_(1.5)
 , use_primitive_term_(true)
 , merge_rounds_(3)
+, max_seed_radius_ratio_(3.0)
 , seed_(0x5e6a7u)
 {}
 
@@ -273,6 +274,13 @@ MatRegionGrowing::setPrimitiveWeight(double lambda)
 {
   assignChecked(lambda_, lambda, lambda >= 0.0 && std::isfinite(lambda), "setPrimitiveWeight",
                 "finite and >= 0");
+}
+
+void
+MatRegionGrowing::setMaxSeedRadiusRatio(double ratio)
+{
+  assignChecked(max_seed_radius_ratio_, ratio, ratio >= 1.0, "setMaxSeedRadiusRatio",
+                ">= 1 (infinity disables the guard)");
 }
 
 void
@@ -369,6 +377,15 @@ MatRegionGrowing::extract(std::vector<pcl::PointIndices>& parts)
       for (const int* it = g.neighboursBegin(i); it != g.neighboursEnd(i); ++it) {
         const int j = *it;
         if (visited[j])
+          continue;
+        // Thickness guard (not in the reference): the growing test is local, so a run of
+        // small steps (each C_r below δ0, e.g. 1 % per node along a tapering finger or a
+        // vase's neck) lets one region drift from the body far into a limb. A part whose
+        // nodes are more than max_seed_radius_ratio_ times thinner than its seed — the
+        // thickest node, seeds come in decreasing radius — is no longer one part; such
+        // nodes are left for a later seed. NaN radii fail the comparison and may join. It
+        // matters most inside thin parts, whose threshold δ0·log2 ρ lets larger steps chain.
+        if (g.node(j).mean_radius * max_seed_radius_ratio_ < g.node(seed).mean_radius)
           continue;
         const double t = growingThreshold(delta0_, tag[i], tag[j], tags_.tag_ratio);
         if (growingCost(g, i, j, weights) <= t) {

@@ -24,7 +24,8 @@ namespace segmat {
  *  1. seeds in order of decreasing mean radius (ties: smaller node index first);
  *  2. breadth-first growth: a neighbour j of the current node i joins when
  *     cost(i, j) = min(C_r + α·C_θ, λ·C_mp) <= t, with t = δ0 (both tags 0),
- *     δ0·tag_ratio (same thin part) or 0 (different tags); see growing_cost.h;
+ *     δ0·tag_ratio (same thin part) or 0 (different tags); see growing_cost.h; and (not in
+ *     the reference) when j is at most setMaxSeedRadiusRatio() times thinner than the seed;
  *  3. regions with fewer than N_min = max(1, int(η · number of spheres)) nodes are released;
  *     an accepted region swallows every free node that has a sphere centre strictly inside one
  *     of the region's spheres;
@@ -151,6 +152,24 @@ public:
     return merge_rounds_;
   }
 
+  /** \brief Set the largest ratio between a region's seed radius and the mean radius of a node
+   * it may grow into (default 3; infinity disables the guard, as in the reference).
+   *
+   * The growing test compares neighbours only, so many small radius steps can carry one region
+   * from the body far down a tapering limb. With this guard a node thinner than the seed by
+   * more than this factor is left for a later seed. Not in SEG-MAT; on psb-dev it splits
+   * tapering parts (a vase's neck, a human's limb) where the humans do.
+   * \param[in] ratio a value >= 1; other values are rejected with a warning
+   */
+  void
+  setMaxSeedRadiusRatio(double ratio);
+  /** \brief Largest seed-to-node radius ratio inside one grown region. */
+  double
+  getMaxSeedRadiusRatio() const
+  {
+    return max_seed_radius_ratio_;
+  }
+
   /** \brief Set the visibility test used when merging. When unset (the default) the visibility
    * gate is skipped: parts merge on adjacency and histogram similarity alone.
    */
@@ -228,6 +247,7 @@ private:
   double lambda_;
   bool use_primitive_term_;
   int merge_rounds_;
+  double max_seed_radius_ratio_;
   SegmentVisibility visibility_;
   unsigned seed_;
 
