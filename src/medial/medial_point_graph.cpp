@@ -112,8 +112,8 @@ MedialPointGraph::compute(MatGraph& graph)
         tree.nearestKSearch((*xyz)[i], wide, nn, d2);
         for (std::size_t a = 0; a < nn.size(); ++a) {
           const int j = nn[a];
-          if (j > i && sets.find_set(i) != sets.find_set(j) && overlap(i, j))
-            bridges.push_back({d2[a], i, j});
+          if (j != i && sets.find_set(i) != sets.find_set(j) && overlap(i, j))
+            bridges.push_back({d2[a], std::min(i, j), std::max(i, j)});
         }
       }
       std::sort(bridges.begin(), bridges.end(), [](const Bridge& x, const Bridge& y) {

@@ -79,6 +79,26 @@ boundingBoxDiagonal(const std::vector<Eigen::Vector3f>& points)
 } // namespace
 
 std::vector<int>
+voxelCellIndices(const std::vector<Eigen::Vector3f>& points, double voxel_size, std::size_t* cells)
+{
+  const VoxelGrid grid = makeGrid(points, voxel_size);
+  std::vector<std::pair<std::uint64_t, int>> keyed(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    keyed[i] = {VoxelGrid::key(grid.cell(points[i])), static_cast<int>(i)};
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<int> cell(points.size());
+  int count = 0;
+  for (std::size_t i = 0; i < keyed.size(); ++i) {
+    if (i > 0 && keyed[i].first != keyed[i - 1].first)
+      ++count;
+    cell[keyed[i].second] = count;
+  }
+  if (cells)
+    *cells = points.empty() ? 0 : std::size_t(count) + 1;
+  return cell;
+}
+
+std::vector<int>
 voxelRepresentatives(const std::vector<Eigen::Vector3f>& points, double voxel_size)
 {
   const VoxelGrid grid = makeGrid(points, voxel_size);
@@ -107,28 +127,18 @@ voxelRepresentatives(const std::vector<Eigen::Vector3f>& points, double voxel_si
   return kept;
 }
 
-std::vector<int>
-voxelRepresentativesNear(const std::vector<Eigen::Vector3f>& points, std::size_t target,
-                         double* voxel_size, double min_voxel_size)
+double
+voxelSizeForCount(const std::vector<Eigen::Vector3f>& points, std::size_t target,
+                  double min_voxel_size)
 {
-  if (voxel_size)
-    *voxel_size = 0.0;
-  if (points.size() <= target && min_voxel_size > 0.0 && !points.empty()) {
-    if (voxel_size)
-      *voxel_size = min_voxel_size;
-    return voxelRepresentatives(points, min_voxel_size);
-  }
-  if (points.size() <= target || target == 0) {
-    std::vector<int> all(target == 0 ? 0 : points.size());
-    for (std::size_t i = 0; i < all.size(); ++i)
-      all[i] = static_cast<int>(i);
-    return all;
-  }
+  if (points.empty() || target == 0)
+    return 0.0;
+  if (points.size() <= target)
+    return min_voxel_size;
   const double diagonal = boundingBoxDiagonal(points);
-  if (!(diagonal > 0.0)) // every point at one place: one representative
-    return {0};
+  if (!(diagonal > 0.0)) // every point at one place: any side gives one cell
+    return std::max(min_voxel_size, 1.0);
 
-  // Occupied-cell count N(h) ≈ a·h^-s with s ≈ 2 on surfaces, 1 on curves: secant in log-log.
   const double log_target = std::log(double(target));
   double h = diagonal / std::sqrt(double(target));
   double best_h = h, best_error = std::numeric_limits<double>::max();
@@ -136,7 +146,8 @@ voxelRepresentativesNear(const std::vector<Eigen::Vector3f>& points, std::size_t
   for (int pass = 0; pass < 8; ++pass) {
     const VoxelGrid grid = makeGrid(points, std::max(h, min_voxel_size));
     h = grid.size;
-    const double log_n = std::log(double(std::max<std::size_t>(1, countOccupiedCells(points, grid))));
+    const double log_n =
+        std::log(double(std::max<std::size_t>(1, countOccupiedCells(points, grid))));
     const double error = std::abs(log_n - log_target);
     if (error < best_error) {
       best_error = error;
@@ -150,9 +161,22 @@ voxelRepresentativesNear(const std::vector<Eigen::Vector3f>& points, std::size_t
     prev_log_n = log_n;
     h = std::exp(prev_log_h + (log_n - log_target) / slope);
   }
+  return best_h;
+}
+
+std::vector<int>
+voxelRepresentativesNear(const std::vector<Eigen::Vector3f>& points, std::size_t target,
+                         double* voxel_size, double min_voxel_size)
+{
+  const double h = voxelSizeForCount(points, target, min_voxel_size);
   if (voxel_size)
-    *voxel_size = best_h;
-  return voxelRepresentatives(points, best_h);
+    *voxel_size = h;
+  if (h > 0.0)
+    return voxelRepresentatives(points, h);
+  std::vector<int> all(target == 0 ? 0 : points.size());
+  for (std::size_t i = 0; i < all.size(); ++i)
+    all[i] = static_cast<int>(i);
+  return all;
 }
 
 } // namespace segmat

@@ -24,18 +24,20 @@ struct MesoSkeletonParameters
   int orientation_k = 10;           ///< neighbours of the MST orientation graph
   bool use_input_normals = true;    ///< keep the cloud's own normals when it has them
   // Shrinking balls (segmat::ShrinkingBallEstimation).
-  std::size_t ball_count = 0;        ///< surface points that get a ball (0: every working point)
+  std::size_t ball_count = 5000;     ///< surface points that get a ball (0: every working point)
   float initial_radius = 0.0f;       ///< 0: automatic
   float preserve_angle = 0.349066f;  ///< 20°, radians
   float planar_angle = 0.558505f;    ///< 32°, radians
   int max_iterations = 30;           ///< per ball
   // Filtering.
-  float min_separation_angle = 0.610865f; ///< 35°: drops balls spiking into convex edges
-  int outlier_k = 10;                     ///< neighbours of the radius-outlier test
-  float outlier_ratio = 2.0f;             ///< r / median(r of neighbours) outside [1/x, x]: drop
+  float min_separation_angle = 0.0f; ///< radians; 0: off (see the class comment)
+  int outlier_k = 10;                ///< neighbours of the radius-outlier test
+  float outlier_ratio = 2.0f;        ///< r / median(r of neighbours) outside [1/x, x]: drop
+  float contact_tolerance = 0.1f;    ///< contact samples: within (1 + x)·r of the final centre
+  float min_contact_spread = 1.047198f; ///< 60°: the contacts' smallest angular spread
   // Contraction (neighbour averaging across sheets and curves).
-  int contraction_iterations = 3;
-  int contraction_k = 10;
+  int contraction_iterations = 5;
+  float contraction_radius = 1.0f; ///< neighbourhood radius, × the point's ball radius
   // Reduction and medial normals.
   std::size_t target_size = 2000; ///< about the size of SEG-MAT's base MAT
   float min_spacing = 0.005f;     ///< smallest reduction voxel, × working-cloud diagonal
@@ -87,18 +89,29 @@ estimateMesoSkeleton(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, b
  *  1. pre-processing (segmat::CloudPreprocessing): finite points, resampled to the working size,
  *     unit normals — the cloud's own when PointT has them (and setUseInputNormalsFlag(true)),
  *     otherwise PCA-estimated and MST-oriented outward;
- *  2. shrinking balls (Ma, Bae, Choi 2012; segmat::ShrinkingBallEstimation) for the working
- *     points (or a voxel subset of setBallCount() of them; the balls still see every working
- *     point);
- *  3. filters: invalid balls, separation angle below the minimum (spikes into convex edges and
- *     noise), radius outside [m/x, x·m], m the median radius of the k nearest balls;
- *  4. contraction: a few passes that move each centre towards the Gaussian-weighted mean of its
- *     k nearest centres, only across the local structure (along the smallest PCA direction of a
- *     sheet, in the plane normal to a curve), so sheets and curves thin out without shrinking;
- *  5. reduction to about the target size (segmat::voxelRepresentativesNear on the centres);
- *  6. radius = distance from the centre to the nearest working point; normal = smallest PCA
- *     direction of the k nearest medial points (for curve-like neighbourhoods, whose smallest
- *     direction is arbitrary, the curve direction: what C_θ should compare there).
+ *  2. shrinking balls (Ma, Bae, Choi 2012; segmat::ShrinkingBallEstimation) for a voxel subset
+ *     of setBallCount() working points (default 5000; the balls still see every working point:
+ *     the output is reduced to ~2000 points anyway, and a ball's cost grows with the samples
+ *     near-equidistant from its centre);
+ *  3. filters: invalid balls; optionally a minimum separation angle (off by default: with
+ *     estimated normals a slightly tilted ball stops on a sample close to p through the 20°
+ *     denoise rule, so most good balls have small separation angles); radius outside
+ *     [m/x, x·m], m the median radius of the k nearest balls;
+ *  4. reduction to about the target size by voxel centroids (voxel side at least
+ *     min_spacing × the working cloud's diagonal, so the blob of balls at a sphere's centre
+ *     stays a few points), then contraction passes: each centre moves towards the
+ *     Gaussian-weighted mean of the centres within contraction_radius × its ball radius, only
+ *     across the local structure (along the smallest PCA direction of a sheet, in the plane
+ *     normal to a curve, freely in a blob: a medial set has no volume), so sheets and curves
+ *     thin out without shrinking; then the centroids of the same voxels again (merges what the
+ *     contraction brought together);
+ *  5. radius = distance from the centre to the nearest working point; medialness test: the
+ *     working points within (1 + contact_tolerance)·r must spread over at least
+ *     min_contact_spread (60°) as seen from the centre — a centre left off its sheet touches
+ *     one side only and has too small a ball;
+ *  6. normal = smallest PCA direction of the k nearest medial points; for curve-like
+ *     neighbourhoods (middle eigenvalue < 0.1 × largest), whose smallest direction is
+ *     arbitrary, the curve direction instead: what C_θ should compare there.
  * Output fields: xyz = centre, normal, radius, surface_index = the nearest input point,
  * contact_index = the sample that stopped the ball (both index the input cloud).
  * Deterministic; the thread count does not change the result.
