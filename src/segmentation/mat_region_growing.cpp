@@ -1,0 +1,451 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <segmat/segmentation/growing_cost.h>
+#include <segmat/segmentation/mat_region_growing.h>
+#include <segmat/segmentation/patch_merging.h>
+
+#include <pcl/console/print.h>
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace segmat {
+namespace {
+
+/** Radius queries over the sphere centres, exact in double (the kd-tree works in float, so it is
+ * asked with a small margin and its answers are filtered).
+ */
+class SphereIndex
+{
+public:
+  SphereIndex(const std::vector<Eigen::Vector3d>& centers) : centers_(centers)
+  {
+    auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+    cloud->reserve(centers.size());
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
+    Eigen::Vector3d hi = -lo;
+    for (const Eigen::Vector3d& c : centers) {
+      cloud->push_back(pcl::PointXYZ(static_cast<float>(c.x()), static_cast<float>(c.y()),
+                                     static_cast<float>(c.z())));
+      lo = lo.cwiseMin(c);
+      hi = hi.cwiseMax(c);
+    }
+    // Non-finite centres are left out of the tree (PCL maps the indices back).
+    cloud->is_dense = lo.allFinite() && hi.allFinite();
+    margin_ = cloud->is_dense && !centers.empty() ? 1e-5 * (hi - lo).norm() + 1e-12 : 1e-6;
+    tree_.setSortedResults(false);
+    tree_.setInputCloud(cloud);
+  }
+
+  /** Spheres whose centre lies strictly closer than \a radius to \a q, in no particular order
+   * (callers sort or de-duplicate what they keep). */
+  void
+  within(const Eigen::Vector3d& q, double radius, std::vector<int>& out)
+  {
+    out.clear();
+    if (!(radius > 0.0) || !std::isfinite(radius) || !q.allFinite() || centers_.empty())
+      return; // a non-finite sphere contains nothing (and PCL asserts on NaN queries)
+    const pcl::PointXYZ p(static_cast<float>(q.x()), static_cast<float>(q.y()),
+                          static_cast<float>(q.z()));
+    tree_.radiusSearch(p, radius * (1.0 + 1e-6) + margin_, indices_, sq_dist_);
+    for (int s : indices_)
+      if ((centers_[s] - q).norm() < radius)
+        out.push_back(s);
+  }
+
+private:
+  const std::vector<Eigen::Vector3d>& centers_;
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree_;
+  double margin_ = 0.0;
+  std::vector<int> indices_;
+  std::vector<float> sq_dist_;
+};
+
+/** A part while it is built: grown (coarse) nodes and all its nodes (dense). */
+struct Patch
+{
+  std::vector<int> coarse;
+  std::vector<int> dense;
+};
+
+/** Sorted unique spheres of a node list. */
+std::vector<int>
+spheresOf(const MatGraph& g, const std::vector<int>& nodes)
+{
+  std::vector<int> s;
+  for (int i : nodes)
+    for (int k = 0; k < g.node(i).size(); ++k)
+      s.push_back(g.node(i).v[k]);
+  std::sort(s.begin(), s.end());
+  s.erase(std::unique(s.begin(), s.end()), s.end());
+  return s;
+}
+
+/** Tiny-patch absorption (MergeTinyPatches, reference-facts §3.7). Each tiny patch joins the
+ * dense patch that overlaps it (some pair of spheres with |c1 − c2| < r1 + r2) with the lowest
+ * score 0.5·EMD_norm + 0.5·distance_norm, both min–max normalised over the candidates (a term
+ * with max == min counts 0). Fixes: a single candidate is taken (the reference skipped it and
+ * left the patch unassigned), equal distances no longer give 0/0, ties go to the lower patch.
+ * Without a candidate the patch joins the dense patch with the nearest sphere centre. Scores are
+ * computed against the dense patches as grown, so the result does not depend on the order in
+ * which tiny patches are absorbed.
+ */
+void
+absorbTinyPatches(const MatGraph& g, const std::vector<std::vector<int>>& tiny,
+                  const RadiusBinning& binning, SphereIndex& index, std::vector<Patch>& patches)
+{
+  if (tiny.empty() || patches.empty())
+    return;
+  const auto& c = g.centers();
+  const auto& r = g.radii();
+  const double r_max = *std::max_element(r.begin(), r.end());
+  std::vector<std::vector<int>> dense_spheres;
+  std::vector<std::vector<double>> dense_hist;
+  std::vector<std::vector<int>> owners(g.numSpheres());
+  for (std::size_t p = 0; p < patches.size(); ++p) {
+    dense_spheres.push_back(spheresOf(g, patches[p].dense));
+    dense_hist.push_back(radiusHistogram(dense_spheres.back(), r, binning));
+    for (int s : dense_spheres.back())
+      owners[s].push_back(static_cast<int>(p));
+  }
+
+  std::vector<int> target(tiny.size(), -1);
+  std::vector<int> near;
+  for (std::size_t t = 0; t < tiny.size(); ++t) {
+    const std::vector<int> spheres = spheresOf(g, tiny[t]);
+    std::vector<int> candidates;
+    for (int s : spheres) {
+      index.within(c[s], r[s] + r_max, near);
+      for (int q : near)
+        if ((c[s] - c[q]).norm() < r[s] + r[q])
+          candidates.insert(candidates.end(), owners[q].begin(), owners[q].end());
+    }
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+
+    if (candidates.empty()) {
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t q = 0; q < owners.size(); ++q)
+        for (int o : owners[q])
+          for (int s : spheres) {
+            const double d = (c[s] - c[q]).norm();
+            if (d < best || (d == best && o < target[t])) {
+              best = d;
+              target[t] = o;
+            }
+          }
+      if (target[t] < 0)
+        target[t] = 0; // NaN coordinates: any patch is as good as another
+      continue;
+    }
+
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (int s : spheres)
+      centroid += c[s];
+    centroid /= static_cast<double>(spheres.size());
+    const std::vector<double> hist = radiusHistogram(spheres, r, binning);
+    std::vector<double> emd(candidates.size()), dist(candidates.size());
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const int d = candidates[k];
+      emd[k] = histogramEmd(hist, dense_hist[d], binning.spacing);
+      dist[k] = std::numeric_limits<double>::infinity();
+      for (int q : dense_spheres[d])
+        dist[k] = std::min(dist[k], (centroid - c[q]).norm() - r[q]);
+    }
+    const auto normalised = [](const std::vector<double>& v, std::size_t k) {
+      const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+      return *hi > *lo ? (v[k] - *lo) / (*hi - *lo) : 0.0;
+    };
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const double score = 0.5 * normalised(emd, k) + 0.5 * normalised(dist, k);
+      if (score < best || target[t] < 0) {
+        best = score;
+        target[t] = candidates[k];
+      }
+    }
+  }
+  for (std::size_t t = 0; t < tiny.size(); ++t)
+    patches[target[t]].dense.insert(patches[target[t]].dense.end(), tiny[t].begin(),
+                                    tiny[t].end());
+}
+
+/** Merging rounds (MergeIterations, reference-facts §3.9). EMD_max is taken once, over all pairs
+ * of the patches entering round 1, as in the reference. A merged patch takes the place of its
+ * lowest member and concatenates the members' nodes in patch order.
+ */
+void
+mergePatches(const MatGraph& g, const RadiusBinning& binning, int rounds,
+             const SegmentVisibility& visibility, unsigned seed, std::vector<Patch>& patches)
+{
+  double emd_max = 0.0;
+  for (int round = 0; round < rounds && patches.size() > 1; ++round) {
+    std::vector<std::vector<int>> spheres;
+    std::vector<std::vector<double>> hist;
+    for (const Patch& p : patches) {
+      spheres.push_back(spheresOf(g, p.dense));
+      hist.push_back(radiusHistogram(spheres.back(), g.radii(), binning));
+    }
+    if (round == 0)
+      emd_max = maxPairwiseEmd(hist, binning.spacing);
+    const MergeRound& settings = defaultMergeRounds()[round];
+    const std::vector<int> group =
+        mergeRoundGroups(spheres, hist, binning.spacing, g.centers(), g.radii(),
+                         settings.emd_factor * emd_max, settings.visibility_ratio, visibility,
+                         seed, round);
+    std::vector<Patch> merged(*std::max_element(group.begin(), group.end()) + 1);
+    for (std::size_t p = 0; p < patches.size(); ++p) {
+      Patch& into = merged[group[p]];
+      into.coarse.insert(into.coarse.end(), patches[p].coarse.begin(), patches[p].coarse.end());
+      into.dense.insert(into.dense.end(), patches[p].dense.begin(), patches[p].dense.end());
+    }
+    patches = std::move(merged);
+  }
+}
+
+} // namespace
+
+MatRegionGrowing::MatRegionGrowing()
+: delta0_(0.015)
+, eta_(0.002)
+, alpha_(0.05)
+, lambda_(1.5)
+, use_primitive_term_(true)
+, merge_rounds_(3)
+, seed_(0x5e6a7u)
+{}
+
+void
+MatRegionGrowing::setInputGraph(const MatGraph::ConstPtr& graph)
+{
+  graph_ = graph;
+}
+
+void
+MatRegionGrowing::setStructureTags(const StructureTags& tags)
+{
+  tags_ = tags;
+}
+
+namespace {
+/** Assigns a validated setter argument, or warns and keeps the old value (PCL style). */
+void
+assignChecked(double& field, double value, bool valid, const char* setter, const char* rule)
+{
+  if (!valid) {
+    PCL_WARN("[segmat::MatRegionGrowing::%s] %g is not %s; keeping %g.\n", setter, value, rule,
+             field);
+    return;
+  }
+  field = value;
+}
+} // namespace
+
+void
+MatRegionGrowing::setGrowingThreshold(double delta0)
+{
+  assignChecked(delta0_, delta0, delta0 > 0.0 && std::isfinite(delta0), "setGrowingThreshold",
+                "finite and > 0");
+}
+
+void
+MatRegionGrowing::setMinRegionFraction(double eta)
+{
+  assignChecked(eta_, eta, eta >= 0.0 && eta <= 1.0, "setMinRegionFraction", "in [0, 1]");
+}
+
+void
+MatRegionGrowing::setAngleWeight(double alpha)
+{
+  assignChecked(alpha_, alpha, alpha >= 0.0 && std::isfinite(alpha), "setAngleWeight",
+                "finite and >= 0");
+}
+
+void
+MatRegionGrowing::setPrimitiveWeight(double lambda)
+{
+  assignChecked(lambda_, lambda, lambda >= 0.0 && std::isfinite(lambda), "setPrimitiveWeight",
+                "finite and >= 0");
+}
+
+void
+MatRegionGrowing::setMergeRounds(int rounds)
+{
+  const int available = static_cast<int>(defaultMergeRounds().size());
+  if (rounds < 0 || rounds > available) {
+    PCL_WARN("[segmat::MatRegionGrowing::setMergeRounds] %d is not in [0, %d]; keeping %d.\n",
+             rounds, available, merge_rounds_);
+    return;
+  }
+  merge_rounds_ = rounds;
+}
+
+void
+MatRegionGrowing::clearOutput()
+{
+  coarse_parts_.clear();
+  node_labels_.clear();
+  grown_region_sizes_.clear();
+  tiny_patch_sizes_.clear();
+}
+
+bool
+MatRegionGrowing::extract(std::vector<pcl::PointIndices>& parts)
+{
+  parts.clear();
+  clearOutput();
+  if (!graph_ || graph_->empty()) {
+    PCL_ERROR("[segmat::MatRegionGrowing::extract] No input graph, or it is empty.\n");
+    return false;
+  }
+  const MatGraph& g = *graph_;
+  const int n = static_cast<int>(g.numNodes());
+
+  // Structural tags: all 0 unless a matching set was given.
+  std::vector<int> tag(n, 0);
+  if (tags_.node_tag.size() == static_cast<std::size_t>(n)) {
+    tag = tags_.node_tag;
+    int unknown = 0;
+    for (int& t : tag)
+      if (t < 0 || t >= static_cast<int>(tags_.tag_ratio.size()) ||
+          !std::isfinite(tags_.tag_ratio[t])) {
+        t = 0;
+        ++unknown;
+      }
+    if (unknown > 0)
+      PCL_WARN("[segmat::MatRegionGrowing::extract] %d nodes carry a tag without a finite "
+               "ratio; treated as 0.\n",
+               unknown);
+  }
+  else if (!tags_.node_tag.empty()) {
+    PCL_WARN("[segmat::MatRegionGrowing::extract] %zu structure tags for %d nodes; ignored.\n",
+             tags_.node_tag.size(), n);
+  }
+
+  GrowingCostWeights weights;
+  weights.alpha = alpha_;
+  weights.lambda = lambda_;
+  weights.use_primitive_term = use_primitive_term_ && g.hasPrimitives();
+
+  // η counts spheres (base-MAT vertices), not nodes (reference-facts §3.6); at least one node.
+  const int min_region =
+      std::max(1, static_cast<int>(eta_ * static_cast<double>(g.numSpheres())));
+
+  // Seeds by decreasing mean radius; stable, so ties go to the smaller index (the reference's
+  // std::sort left ties unordered). A NaN radius sorts last.
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  const auto key = [&g](int i) {
+    const double r = g.node(i).mean_radius;
+    return std::isnan(r) ? -std::numeric_limits<double>::infinity() : r;
+  };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) > key(b); });
+
+  std::vector<std::vector<int>> sphere_nodes(g.numSpheres());
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < g.node(i).size(); ++k)
+      sphere_nodes[g.node(i).v[k]].push_back(i);
+  SphereIndex index(g.centers());
+
+  std::vector<char> visited(n, 0);
+  std::vector<char> sphere_queried(g.numSpheres(), 0);
+  std::vector<Patch> patches;
+  std::vector<int> region, near;
+  for (int seed : order) {
+    if (visited[seed])
+      continue;
+    // Breadth-first growth; the test is local: current node against neighbour.
+    region.assign(1, seed);
+    visited[seed] = 1;
+    for (std::size_t head = 0; head < region.size(); ++head) {
+      const int i = region[head];
+      for (const int* it = g.neighboursBegin(i); it != g.neighboursEnd(i); ++it) {
+        const int j = *it;
+        if (visited[j])
+          continue;
+        const double t = growingThreshold(delta0_, tag[i], tag[j], tags_.tag_ratio);
+        if (growingCost(g, i, j, weights) <= t) {
+          visited[j] = 1;
+          region.push_back(j);
+        }
+      }
+    }
+    if (static_cast<int>(region.size()) < min_region) {
+      for (int i : region)
+        visited[i] = 0; // released: these nodes may seed or join later
+      continue;
+    }
+    // Swallowing: every free node with a sphere centre strictly inside a sphere of the region.
+    // A sphere queried once has already swallowed all it can: visited nodes stay visited.
+    Patch patch;
+    patch.coarse = region;
+    patch.dense = region;
+    for (int s : spheresOf(g, region)) {
+      if (sphere_queried[s])
+        continue;
+      sphere_queried[s] = 1;
+      index.within(g.centers()[s], g.radii()[s], near);
+      for (int q : near)
+        for (int j : sphere_nodes[q])
+          if (!visited[j]) {
+            visited[j] = 1;
+            patch.dense.push_back(j);
+          }
+    }
+    grown_region_sizes_.push_back(static_cast<int>(region.size()));
+    patches.push_back(std::move(patch));
+  }
+
+  // Leftovers: connected components of free nodes (the start node is marked at once; the
+  // reference did not, and could list it twice).
+  std::vector<std::vector<int>> tiny;
+  for (int s = 0; s < n; ++s) {
+    if (visited[s])
+      continue;
+    std::vector<int> component{s};
+    visited[s] = 1;
+    for (std::size_t head = 0; head < component.size(); ++head)
+      for (const int* it = g.neighboursBegin(component[head]);
+           it != g.neighboursEnd(component[head]); ++it)
+        if (!visited[*it]) {
+          visited[*it] = 1;
+          component.push_back(*it);
+        }
+    tiny_patch_sizes_.push_back(static_cast<int>(component.size()));
+    tiny.push_back(std::move(component));
+  }
+
+  const RadiusBinning binning = makeRadiusBinning(g.radii());
+  if (patches.empty()) {
+    // No region reached the minimal size: the leftovers are the parts.
+    for (auto& t : tiny)
+      patches.push_back({t, t});
+    tiny.clear();
+  }
+  absorbTinyPatches(g, tiny, binning, index, patches);
+  mergePatches(g, binning, merge_rounds_, visibility_, seed_, patches);
+
+  // Outputs, in patch order.
+  node_labels_.assign(n, -1);
+  parts.resize(patches.size());
+  coarse_parts_.resize(patches.size());
+  for (std::size_t p = 0; p < patches.size(); ++p) {
+    std::vector<int>& dense = patches[p].dense;
+    std::sort(dense.begin(), dense.end());
+    for (int i : dense)
+      node_labels_[i] = static_cast<int>(p);
+    parts[p].indices = dense;
+    coarse_parts_[p] = std::move(patches[p].coarse);
+    std::sort(coarse_parts_[p].begin(), coarse_parts_[p].end());
+  }
+  return true;
+}
+
+} // namespace segmat

@@ -1,0 +1,182 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <segmat/segmentation/mesh_segmentation.h>
+
+#include <pcl/console/print.h>
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+
+namespace segmat {
+namespace {
+
+class StageClock
+{
+public:
+  double
+  lap()
+  {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - start_).count();
+    start_ = now;
+    return seconds;
+  }
+
+private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+} // namespace
+
+MeshSegmentation::MeshSegmentation() = default; // the grower and the transfer hold the defaults
+
+void
+MeshSegmentation::setInputMesh(const TriangleMesh::ConstPtr& mesh)
+{
+  mesh_ = mesh;
+  surface_tree_.reset();
+  transfer_.setInputMesh(mesh); // drops the transfer's face-graph weights
+}
+
+void
+MeshSegmentation::setBaseMat(const MedialMesh::ConstPtr& base)
+{
+  base_ = base;
+  graph_.reset();
+  tags_valid_ = false;
+}
+
+void
+MeshSegmentation::setStructuredMat(const MedialMesh::ConstPtr& structured)
+{
+  structured_ = structured;
+  tags_valid_ = false;
+}
+
+bool
+MeshSegmentation::segment(std::vector<int>& face_labels)
+{
+  face_labels.clear();
+  face_labels_.clear();
+  mat_parts_.clear();
+  stage_seconds_.clear();
+  if (!mesh_ || mesh_->empty()) {
+    PCL_ERROR("[segmat::MeshSegmentation::segment] no mesh, or a mesh without faces.\n");
+    return false;
+  }
+  if (!base_ || base_->empty()) {
+    PCL_ERROR("[segmat::MeshSegmentation::segment] no base medial mesh, or an empty one (medial "
+              "meshes are inputs for now: setBaseMat).\n");
+    return false;
+  }
+  if (!structured_) {
+    PCL_ERROR("[segmat::MeshSegmentation::segment] no structured medial mesh "
+              "(setStructuredMat).\n");
+    return false;
+  }
+
+  StageClock clock;
+  double seconds = 0.0;
+  if (!graph_) {
+    graph_ = std::make_shared<MatGraph>(MatGraph::fromMedialMesh(*base_));
+    grower_.setInputGraph(graph_);
+    transfer_.setInputGraph(graph_);
+    tags_valid_ = false;
+    seconds = clock.lap();
+  }
+  if (graph_->empty()) {
+    PCL_ERROR("[segmat::MeshSegmentation::segment] the base medial mesh has no triangle and no "
+              "edge: no graph node.\n");
+    return false;
+  }
+  stage_seconds_.emplace_back("graph", seconds);
+
+  seconds = 0.0;
+  clock.lap();
+  if (!tags_valid_) {
+    if (structured_->empty()) {
+      // Like the reference: only a warning, and every node counts as bulky.
+      PCL_WARN("[segmat::MeshSegmentation::segment] empty structured medial mesh: no thin "
+               "parts.\n");
+      tags_ = StructureTags();
+    }
+    else
+      tags_ = computeStructureTags(*structured_, *graph_);
+    grower_.setStructureTags(tags_);
+    tags_valid_ = true;
+    seconds = clock.lap();
+  }
+  stage_seconds_.emplace_back("tags", seconds);
+
+  seconds = 0.0;
+  clock.lap();
+  if (!surface_tree_) {
+    surface_tree_ = std::make_shared<AabbTree>(*mesh_);
+    // Two points see each other when the segment between them crosses no face (§4.4).
+    const std::shared_ptr<const AabbTree> tree = surface_tree_;
+    grower_.setSegmentVisibility([tree](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+      return !tree->segmentIntersects(a, b);
+    });
+    seconds = clock.lap();
+  }
+  stage_seconds_.emplace_back("surface_tree", seconds);
+
+  clock.lap();
+  std::vector<pcl::PointIndices> grown;
+  if (!grower_.extract(grown) || grown.empty()) {
+    PCL_ERROR("[segmat::MeshSegmentation::segment] region growing failed.\n");
+    stage_seconds_.clear();
+    return false;
+  }
+  stage_seconds_.emplace_back("grow_merge", clock.lap());
+
+  transfer_.setParts(grower_.getCoarseParts());
+  std::vector<int> labels;
+  if (!transfer_.transfer(labels)) {
+    PCL_ERROR("[segmat::MeshSegmentation::segment] surface transfer failed.\n");
+    stage_seconds_.clear();
+    return false;
+  }
+
+  // Number parts by descending face count; ties keep growing order (the transfer's labels are
+  // already in growing order).
+  const std::vector<int>& label_parts = transfer_.getLabelParts();
+  const int num_labels = static_cast<int>(label_parts.size());
+  std::vector<int> counts(num_labels, 0);
+  for (int l : labels)
+    ++counts[l];
+  std::vector<int> order(num_labels);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return counts[a] > counts[b]; });
+  std::vector<int> rank(num_labels);
+  for (int r = 0; r < num_labels; ++r)
+    rank[order[r]] = r;
+  for (int& l : labels)
+    l = rank[l];
+  mat_parts_.resize(num_labels);
+  for (int r = 0; r < num_labels; ++r)
+    mat_parts_[r] = grown[label_parts[order[r]]];
+  stage_seconds_.emplace_back("transfer", clock.lap());
+
+  face_labels_ = labels;
+  face_labels.swap(labels);
+  return true;
+}
+
+void
+MeshSegmentation::getParts(std::vector<pcl::PointIndices>& parts) const
+{
+  parts.clear();
+  int num_labels = 0;
+  for (int l : face_labels_)
+    num_labels = std::max(num_labels, l + 1);
+  parts.resize(num_labels);
+  for (std::size_t f = 0; f < face_labels_.size(); ++f)
+    parts[face_labels_[f]].indices.push_back(static_cast<pcl::index_t>(f));
+}
+
+} // namespace segmat

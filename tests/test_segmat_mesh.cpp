@@ -1,0 +1,88 @@
+// The segmat_mesh command-line program: outputs, JSON, exit codes and messages.
+#include <segmat/io/seg.h>
+
+#include <util/run_program.h>
+#include <util/temp_files.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+using namespace segmat;
+
+namespace {
+
+const std::string kTeddy = std::string(SEGMAT_DATA_DIR) + "/teddy/";
+
+std::string
+teddyArgs(const std::string& prefix)
+{
+  return kTeddy + "teddy.off -b " + kTeddy + "teddy_mat.ma -s " + kTeddy + "teddy_smat.ma -o " +
+         prefix;
+}
+
+} // namespace
+
+TEST(SegmatMesh, WritesSegAndPlyAndPrintsJson)
+{
+  const std::string prefix = test::scratchDir() + "teddy_cli";
+  const test::ProgramRun run = test::runProgram("segmat_mesh", teddyArgs(prefix) + " --json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  ASSERT_TRUE(test::fileExists(prefix + ".seg"));
+  ASSERT_TRUE(test::fileExists(prefix + ".ply"));
+  const std::vector<int> labels = io::loadSeg(prefix + ".seg", 19092); // exactly 19092 lines
+  EXPECT_EQ(labels.size(), 19092u);
+  EXPECT_EQ(test::readWholeFile(prefix + ".ply").rfind("ply", 0), 0u);
+
+  std::istringstream in(run.out);
+  boost::property_tree::ptree json;
+  boost::property_tree::read_json(in, json);
+  EXPECT_EQ(json.get<int>("parts"), 8);
+  std::size_t total = 0, n = 0;
+  for (const auto& c : json.get_child("face_counts")) {
+    total += c.second.get_value<std::size_t>();
+    ++n;
+  }
+  EXPECT_EQ(n, 8u);
+  EXPECT_EQ(total, 19092u);
+  for (const char* stage : {"load", "graph", "tags", "surface_tree", "grow_merge", "transfer", "write"})
+    EXPECT_GE(json.get<double>(std::string("seconds.") + stage), 0.0) << stage;
+
+  // Plain output says the same.
+  const test::ProgramRun plain = test::runProgram("segmat_mesh", teddyArgs(prefix + "_plain"));
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_NE(plain.out.find("parts: 8"), std::string::npos) << plain.out;
+  EXPECT_EQ(io::loadSeg(prefix + "_plain.seg"), labels);
+}
+
+TEST(SegmatMesh, BadInputNamesTheFileAndFails)
+{
+  const std::string prefix = test::scratchDir() + "bad_cli";
+  // Missing mesh file.
+  test::ProgramRun run = test::runProgram(
+      "segmat_mesh", kTeddy + "no_such.off -b " + kTeddy + "teddy_mat.ma -s " + kTeddy +
+                         "teddy_smat.ma -o " + prefix);
+  EXPECT_NE(run.status, 0);
+  EXPECT_NE(run.err.find("no_such.off"), std::string::npos) << run.err;
+  EXPECT_FALSE(test::fileExists(prefix + ".seg"));
+
+  // Malformed base MAT.
+  const std::string broken = test::writeScratchFile("broken.ma", "3 0 0\nv 0 0 0 1\nv 1 0 zz 1\n");
+  run = test::runProgram("segmat_mesh", kTeddy + "teddy.off -b " + broken + " -s " + kTeddy +
+                                            "teddy_smat.ma -o " + prefix);
+  EXPECT_NE(run.status, 0);
+  EXPECT_NE(run.err.find("broken.ma"), std::string::npos) << run.err;
+  EXPECT_FALSE(test::fileExists(prefix + ".seg"));
+
+  // Usage errors.
+  run = test::runProgram("segmat_mesh", kTeddy + "teddy.off -o " + prefix);
+  EXPECT_NE(run.status, 0);
+  EXPECT_NE(run.err.find("usage"), std::string::npos);
+  run = test::runProgram("segmat_mesh", teddyArgs(prefix) + " -g abc");
+  EXPECT_NE(run.status, 0);
+  EXPECT_NE(run.err.find("-g"), std::string::npos);
+  EXPECT_FALSE(test::fileExists(prefix + ".seg"));
+}
