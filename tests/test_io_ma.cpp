@@ -1,4 +1,5 @@
-// MA reader/writer: the authors' teddy MATs, header mismatch warning, exact round trip, malformed files.
+// MA reader/writer: the authors' teddy MATs, header mismatch warning, exact round trip, malformed
+// files.
 #include <segmat/common/error.h>
 #include <segmat/io/ma.h>
 
@@ -34,12 +35,15 @@ expectSmall(const MedialMesh& m)
 ::testing::AssertionResult
 maFails(const std::string& name, const std::string& text, long line, const std::string& needle)
 {
-  const std::string path = writeScratchFile(name, text);
-  return throwsFileError([&] { io::loadMa(path); }, path, line, needle);
+  return segmat::test::loadingFails([](const std::string& p) { io::loadMa(p); }, name, text, line,
+                                    needle);
 }
 } // namespace
 
-TEST(LoadMa, Small) { expectSmall(io::loadMa(writeScratchFile("small.ma", kSmall))); }
+TEST(LoadMa, Small)
+{
+  expectSmall(io::loadMa(writeScratchFile("small.ma", kSmall)));
+}
 
 TEST(LoadMa, CrlfNoHeaderNormalsAndAnyOrder)
 {
@@ -108,8 +112,8 @@ TEST(SaveMa, TeddyRoundTripIsExact)
 
 TEST(SaveMa, AwkwardDoublesRoundTrip)
 {
-  const MedialMesh m({{0.1, 1.0 / 3.0, -1e-310}, {1e300, -0.0, 2.0 / 3.0}}, {1e-17, 0.0},
-                     {{0, 1}}, {});
+  const MedialMesh m({{0.1, 1.0 / 3.0, -1e-310}, {1e300, -0.0, 2.0 / 3.0}}, {1e-17, 0.0}, {{0, 1}},
+                     {});
   const std::string path = segmat::test::scratchDir() + "awkward.ma";
   io::saveMa(path, m);
   const MedialMesh back = io::loadMa(path);
@@ -147,14 +151,15 @@ TEST(LoadMaErrors, WrongNumberOfValues)
   EXPECT_TRUE(maFails("v3.ma", "1 0 0\nv 0 0 0\n", 2, "'v' line needs 4 values, has 3"));
   EXPECT_TRUE(maFails("v5.ma", "1 0 0\nv 0 0 0 1 9\n", 2, "has more: '9'"));
   EXPECT_TRUE(maFails("e1.ma", "2 1 0\nv 0 0 0 1\nv 1 0 0 1\ne 0\n", 4, "'e' line needs 2"));
-  EXPECT_TRUE(maFails("f4.ma", "3 0 1\nv 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 0 1 2 0\n", 5,
-                      "has more"));
+  EXPECT_TRUE(
+      maFails("f4.ma", "3 0 1\nv 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\nf 0 1 2 0\n", 5, "has more"));
 }
 
 TEST(LoadMaErrors, BadRadius)
 {
   EXPECT_TRUE(maFails("negr.ma", "2 0 0\nv 0 0 0 1\nv 1 0 0 -0.5\n", 3, "is negative"));
-  EXPECT_TRUE(maFails("nanr.ma", "2 0 0\nv 0 0 0 1\nv 1 0 0 nan\n", 3, "radius 'nan' is not finite"));
+  EXPECT_TRUE(
+      maFails("nanr.ma", "2 0 0\nv 0 0 0 1\nv 1 0 0 nan\n", 3, "radius 'nan' is not finite"));
   EXPECT_TRUE(maFails("nanc.ma", "2 0 0\nv 0 0 0 1\nv 1 -inf 0 1\n", 3, "not finite"));
   EXPECT_TRUE(maFails("wordr.ma", "1 0 0\nv 0 0 0 big\n", 2, "'big' is not a number"));
 }
@@ -166,8 +171,8 @@ TEST(LoadMaErrors, IndexOutOfRange)
   // The bad face comes before the spheres: still reported at its own line.
   EXPECT_TRUE(maFails("face_oob.ma", "f 0 1 3\nv 0 0 0 1\nv 1 0 0 1\nv 0 1 0 1\n", 1,
                       "triangle refers to sphere 3"));
-  EXPECT_TRUE(maFails("neg_index.ma", "2 1 0\nv 0 0 0 1\nv 1 0 0 1\ne -1 0\n", 4,
-                      "refers to sphere -1"));
+  EXPECT_TRUE(
+      maFails("neg_index.ma", "2 1 0\nv 0 0 0 1\nv 1 0 0 1\ne -1 0\n", 4, "refers to sphere -1"));
   EXPECT_TRUE(maFails("float_index.ma", "2 1 0\nv 0 0 0 1\nv 1 0 0 1\ne 0 1.0\n", 4,
                       "'1.0' is not an integer"));
 }

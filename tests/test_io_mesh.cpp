@@ -1,4 +1,5 @@
-// loadMesh/saveMesh by extension (OFF, PLY, OBJ, STL), PolygonMesh conversion, malformed PCL formats.
+// loadMesh/saveMesh by extension (OFF, PLY, OBJ, STL), PolygonMesh conversion, malformed PCL
+// formats.
 #include <segmat/common/error.h>
 #include <segmat/io/mesh.h>
 #include <segmat/io/off.h>
@@ -57,11 +58,28 @@ binaryTrianglePly()
   return ply;
 }
 
-::testing::AssertionResult
-meshFails(const std::string& name, const std::string& bytes, const std::string& needle)
+// Binary STL of the unit square as two triangles (80-byte header, count, 50 bytes a triangle).
+std::string
+binarySquareStl()
 {
-  const std::string path = writeScratchFile(name, bytes);
-  return throwsFileError([&] { io::loadMesh(path); }, path, 0, needle);
+  std::string stl(80, ' ');
+  appendBinary<std::uint32_t>(stl, 2);
+  const float triangles[2][9] = {{0, 0, 0, 1, 0, 0, 1, 1, 0}, {0, 0, 0, 1, 1, 0, 0, 1, 0}};
+  for (const auto& t : triangles) {
+    for (float n : {0.f, 0.f, 1.f})
+      appendBinary(stl, n);
+    for (float v : t)
+      appendBinary(stl, v);
+    appendBinary<std::uint16_t>(stl, 0);
+  }
+  return stl;
+}
+
+::testing::AssertionResult
+meshFails(const std::string& name, const std::string& bytes, long line, const std::string& needle)
+{
+  return segmat::test::loadingFails([](const std::string& p) { io::loadMesh(p); }, name, bytes,
+                                    line, needle);
 }
 } // namespace
 
@@ -72,7 +90,8 @@ TEST(LoadMesh, OffGoesToLoadOff)
   EXPECT_EQ(a.vertices, b.vertices);
   EXPECT_EQ(a.faces, b.faces);
   // Extension in any case.
-  const std::string upper = writeScratchFile("SQUARE.OFF", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const std::string upper =
+      writeScratchFile("SQUARE.OFF", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(io::loadMesh(upper).numFaces(), 1u);
 }
 
@@ -100,10 +119,11 @@ TEST(LoadMesh, BinaryPlyWithFloats)
 TEST(LoadMesh, ObjWithSlashesQuadAndRelativeIndices)
 {
   const TriangleMesh m = io::loadMesh(writeScratchFile(
-      "quad.obj", "# square\r\nmtllib a.mtl\r\no thing\r\nv 0 0 0\r\nv 1 0 0 1\r\n"
-                  "v 1 1 0 0.5 0.5 0.5\r\nv 0 1 0.1\r\nvt 0 0\r\nvn 0 0 1\r\ng part\r\n"
-                  "usemtl red\r\ns off\r\nf 1//1 2//1 3//1 4//1 # quad\r\nf -4/1/1 -3/2/1 -1/3/1\r\n"
-                  "l 1 2\r\n"));
+      "quad.obj",
+      "# square\r\nmtllib a.mtl\r\no thing\r\nv 0 0 0\r\nv 1 0 0 1\r\n"
+      "v 1 1 0 0.5 0.5 0.5\r\nv 0 1 0.1\r\nvt 0 0\r\nvn 0 0 1\r\ng part\r\n"
+      "usemtl red\r\ns off\r\nf 1//1 2//1 3//1 4//1 # quad\r\nf -4/1/1 -3/2/1 -1/3/1\r\n"
+      "l 1 2\r\n"));
   ASSERT_EQ(m.numVertices(), 4u);
   ASSERT_EQ(m.numFaces(), 3u);
   EXPECT_EQ(m.faces[0], Eigen::Vector3i(0, 1, 2));
@@ -175,7 +195,8 @@ TEST(PolygonMesh, ConversionBothWays)
 
 TEST(PolygonMesh, FromPolygonMeshRejectsBadInput)
 {
-  pcl::PolygonMesh pm = io::toPolygonMesh(TriangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
+  pcl::PolygonMesh pm =
+      io::toPolygonMesh(TriangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
   pm.polygons[0].vertices = {0, 1, 3};
   EXPECT_THROW(io::fromPolygonMesh(pm), Error);
   pm.polygons[0].vertices = {0, 1};
@@ -210,68 +231,86 @@ TEST(LoadMeshErrors, MissingFiles)
 TEST(LoadMeshErrors, PlyEmptyAndJunk)
 {
   // The header is checked before PCL's reader runs, so these name the header line.
-  const auto plyFails = [](const std::string& name, const std::string& bytes, long line,
-                           const std::string& needle) {
-    const std::string path = writeScratchFile(name, bytes);
-    return throwsFileError([&] { io::loadMesh(path); }, path, line, needle);
-  };
-  EXPECT_TRUE(plyFails("empty.ply", "", 0, "empty file"));
-  EXPECT_TRUE(plyFails("junk.ply", std::string("\x7f" "ELF\x02\x01\x01\x00\x00\x00", 10), 1,
-                       "binary data in the PLY header"));
-  EXPECT_TRUE(plyFails("text.ply", "hello world\nthis is not a ply\n", 1, "not a PLY file"));
-  EXPECT_TRUE(plyFails("noend.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n",
-                       4, "no 'end_header'"));
-  EXPECT_TRUE(plyFails("format.ply", "ply\nformat text 1.0\nend_header\n", 2, "unknown PLY format"));
-  EXPECT_TRUE(plyFails("type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\n"
-                       "end_header\n1\n", 4, "unknown PLY property type"));
+  EXPECT_TRUE(meshFails("empty.ply", "", 0, "empty file"));
+  EXPECT_TRUE(meshFails("junk.ply",
+                        std::string("\x7f"
+                                    "ELF\x02\x01\x01\x00\x00\x00",
+                                    10),
+                        1, "binary data in the PLY header"));
+  EXPECT_TRUE(meshFails("text.ply", "hello world\nthis is not a ply\n", 1, "not a PLY file"));
+  EXPECT_TRUE(meshFails("noend.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n",
+                        4, "no 'end_header'"));
+  EXPECT_TRUE(
+      meshFails("format.ply", "ply\nformat text 1.0\nend_header\n", 2, "unknown PLY format"));
+  EXPECT_TRUE(meshFails("type.ply",
+                        "ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\n"
+                        "end_header\n1\n",
+                        4, "unknown PLY property type"));
   // A damaged header byte glued a line break away; PCL's reader would abort on the result.
   std::string glued = binaryTrianglePly();
   glued[glued.find("float z") + 7] = '\xcd';
-  EXPECT_TRUE(plyFails("glued.ply", glued, 6, "binary data in the PLY header"));
-  EXPECT_TRUE(plyFails("vertexlist.ply", "ply\nformat ascii 1.0\nelement vertex 1\n"
-                       "property list uchar int idx\nend_header\n1 0\n", 4,
-                       "list property on the 'vertex' element"));
-  EXPECT_TRUE(plyFails("count.ply", "ply\nformat ascii 1.0\nelement vertex -3\nend_header\n", 3,
-                       "is not a non-negative integer"));
+  EXPECT_TRUE(meshFails("glued.ply", glued, 6, "binary data in the PLY header"));
+  EXPECT_TRUE(meshFails("vertexlist.ply",
+                        "ply\nformat ascii 1.0\nelement vertex 1\n"
+                        "property list uchar int idx\nend_header\n1 0\n",
+                        4, "list property on the 'vertex' element"));
+  EXPECT_TRUE(meshFails("count.ply", "ply\nformat ascii 1.0\nelement vertex -3\nend_header\n", 3,
+                        "is not a non-negative integer"));
   // Bigger counts than the data can hold: refused before PCL allocates for them.
   std::string ply = binaryTrianglePly();
   ply.replace(ply.find("element vertex 3"), 16, "element vertex 400000000");
-  EXPECT_TRUE(plyFails("absurd.ply", ply, 3, "announces 400000000 items"));
+  EXPECT_TRUE(meshFails("absurd.ply", ply, 3, "announces 400000000 items"));
   ply = binaryTrianglePly();
-  EXPECT_TRUE(plyFails("trunc_binary.ply", ply.substr(0, ply.size() - 20), 3,
-                       "truncated file or wrong count"));
+  EXPECT_TRUE(meshFails("trunc_binary.ply", ply.substr(0, ply.size() - 20), 3,
+                        "truncated file or wrong count"));
   // Cut inside the last face: the sizes still fit, PCL's reader notices.
-  EXPECT_TRUE(plyFails("trunc_faces.ply", ply.substr(0, ply.size() - 6), 0,
-                       "not a readable PLY file"));
+  EXPECT_TRUE(
+      meshFails("trunc_faces.ply", ply.substr(0, ply.size() - 6), 0, "not a readable PLY file"));
 }
 
 TEST(LoadMeshErrors, PlyTruncatedText)
 {
   std::string ascii = kQuadPly;
   ascii.resize(ascii.find("3 0 1 4")); // one face missing: the sizes fit, PCL's reader notices
-  EXPECT_TRUE(meshFails("trunc_ascii.ply", ascii, "not a readable PLY file"));
+  EXPECT_TRUE(meshFails("trunc_ascii.ply", ascii, 0, "not a readable PLY file"));
 }
 
 TEST(LoadMeshErrors, PlyBadValues)
 {
   std::string ply = kQuadPly;
   ply.replace(ply.find("1 1 0"), 5, "1 x 0");
-  EXPECT_TRUE(meshFails("word.ply", ply, "vertex 2 is not finite")); // PCL reads a word as NaN
+  EXPECT_TRUE(meshFails("word.ply", ply, 0, "vertex 2 is not finite")); // PCL reads a word as NaN
   ply = kQuadPly;
   ply.replace(ply.find("3 0 1 4"), 7, "3 0 1 9");
-  EXPECT_TRUE(meshFails("index.ply", ply, "refers to vertex 9"));
+  EXPECT_TRUE(meshFails("index.ply", ply, 0, "refers to vertex 9"));
   ply = kQuadPly;
   ply.replace(ply.find("3 0 1 4"), 7, "2 0 1");
-  EXPECT_TRUE(meshFails("twocorners.ply", ply, "face 1 has 2 corners"));
+  EXPECT_TRUE(meshFails("twocorners.ply", ply, 0, "face 1 has 2 corners"));
   ply = kQuadPly;
   ply.replace(ply.find("1 0 0\n1 1"), 5, "1 nan 0");
-  EXPECT_TRUE(meshFails("nan.ply", ply, "vertex 1 is not finite"));
+  EXPECT_TRUE(meshFails("nan.ply", ply, 0, "vertex 1 is not finite"));
 }
 
-TEST(LoadMeshErrors, StlJunk)
+TEST(LoadMesh, BinaryStl)
 {
-  EXPECT_TRUE(meshFails("junk.stl", "this is not an stl file at all\n", "STL"));
-  EXPECT_TRUE(meshFails("empty.stl", "", "STL"));
+  const TriangleMesh m = io::loadMesh(writeScratchFile("square_bin.stl", binarySquareStl()));
+  ASSERT_EQ(m.numFaces(), 2u);
+  EXPECT_EQ(m.numVertices(), 4u);
+  EXPECT_EQ(m.faceArea(0) + m.faceArea(1), 1.0);
+}
+
+TEST(LoadMeshErrors, StlTruncatedAndJunk)
+{
+  // VTK would return the one whole triangle of a cut file, or 2 when the header claims 5.
+  const std::string stl = binarySquareStl();
+  EXPECT_TRUE(meshFails("cut.stl", stl.substr(0, 150), 0,
+                        "announces 2 triangles, which take 184 bytes; the file has 150"));
+  std::string five = stl;
+  five[80] = 5;
+  EXPECT_TRUE(meshFails("five.stl", five, 0, "announces 5 triangles"));
+  EXPECT_TRUE(meshFails("short.stl", "\x01\x02garbage", 0, "too short for a binary STL"));
+  EXPECT_TRUE(meshFails("junk.stl", "this is not an stl file at all\n", 0, "STL"));
+  EXPECT_TRUE(meshFails("empty.stl", "", 0, "empty file"));
 }
 
 TEST(LoadMeshErrors, DamagedPlyAndObjNeverCrash)
@@ -285,21 +324,17 @@ TEST(LoadMeshErrors, DamagedPlyAndObjNeverCrash)
 
 TEST(LoadMeshErrors, ObjCatalogue)
 {
-  const auto objFails = [](const std::string& name, const std::string& text, long line,
-                           const std::string& needle) {
-    const std::string path = writeScratchFile(name, text);
-    return throwsFileError([&] { io::loadMesh(path); }, path, line, needle);
-  };
   const std::string v3 = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-  EXPECT_TRUE(objFails("empty.obj", "", 0, "empty file"));
-  EXPECT_TRUE(objFails("nov.obj", "# nothing\ng group\n", 0, "no 'v' lines"));
-  EXPECT_TRUE(objFails("index.obj", v3 + "f 1 2 9\n", 4, "refers to vertex 9 (1-based) but there are 3"));
-  EXPECT_TRUE(objFails("relative.obj", v3 + "f -1 -2 -4\n", 4, "refers to vertex 0 (1-based)"));
-  EXPECT_TRUE(objFails("zero.obj", v3 + "f 0 1 2\n", 4, "vertex index 0"));
-  EXPECT_TRUE(objFails("two.obj", v3 + "f 1 2\n", 4, "face has 2 corners"));
-  EXPECT_TRUE(objFails("word.obj", v3 + "f 1 two 3\n", 4, "'two' is not an integer"));
-  EXPECT_TRUE(objFails("shortv.obj", "v 0 0 0\nv 1 0\n", 2, "'v' line: missing coordinate"));
-  EXPECT_TRUE(objFails("nanv.obj", "v 0 0 0\nv 1 nan 0\n", 2, "not finite"));
-  EXPECT_TRUE(objFails("junk.obj", std::string("v 0 0 0\n\x00\x01\x02\x03garbage", 19), 2,
-                       "binary data"));
+  EXPECT_TRUE(meshFails("empty.obj", "", 0, "empty file"));
+  EXPECT_TRUE(meshFails("nov.obj", "# nothing\ng group\n", 0, "no 'v' lines"));
+  EXPECT_TRUE(
+      meshFails("index.obj", v3 + "f 1 2 9\n", 4, "refers to vertex 9 (1-based) but there are 3"));
+  EXPECT_TRUE(meshFails("relative.obj", v3 + "f -1 -2 -4\n", 4, "refers to vertex 0 (1-based)"));
+  EXPECT_TRUE(meshFails("zero.obj", v3 + "f 0 1 2\n", 4, "vertex index 0"));
+  EXPECT_TRUE(meshFails("two.obj", v3 + "f 1 2\n", 4, "face has 2 corners"));
+  EXPECT_TRUE(meshFails("word.obj", v3 + "f 1 two 3\n", 4, "'two' is not an integer"));
+  EXPECT_TRUE(meshFails("shortv.obj", "v 0 0 0\nv 1 0\n", 2, "'v' line: missing coordinate"));
+  EXPECT_TRUE(meshFails("nanv.obj", "v 0 0 0\nv 1 nan 0\n", 2, "not finite"));
+  EXPECT_TRUE(
+      meshFails("junk.obj", std::string("v 0 0 0\n\x00\x01\x02\x03garbage", 19), 2, "binary data"));
 }

@@ -1,4 +1,5 @@
-// OFF reader/writer: accepted variants, the malformed-file catalogue, the bundled teddy, round trip.
+// OFF reader/writer: accepted variants, the malformed-file catalogue, the bundled teddy, round
+// trip.
 #include <segmat/common/error.h>
 #include <segmat/io/off.h>
 
@@ -31,17 +32,20 @@ expectSquare(const TriangleMesh& m)
 ::testing::AssertionResult
 offFails(const std::string& name, const std::string& text, long line, const std::string& needle)
 {
-  const std::string path = writeScratchFile(name, text);
-  return throwsFileError([&] { io::loadOff(path); }, path, line, needle);
+  return segmat::test::loadingFails([](const std::string& p) { io::loadOff(p); }, name, text, line,
+                                    needle);
 }
 } // namespace
 
-TEST(LoadOff, PlainFile) { expectSquare(io::loadOff(writeScratchFile("plain.off", kSquare))); }
+TEST(LoadOff, PlainFile)
+{
+  expectSquare(io::loadOff(writeScratchFile("plain.off", kSquare)));
+}
 
 TEST(LoadOff, CountsGluedToHeaderOrOnItsLine)
 {
-  expectSquare(io::loadOff(writeScratchFile(
-      "glued.off", "OFF4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0.5\n3 0 1 2\n3 0 2 3\n")));
+  expectSquare(io::loadOff(
+      writeScratchFile("glued.off", "OFF4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0.5\n3 0 1 2\n3 0 2 3\n")));
   expectSquare(io::loadOff(writeScratchFile(
       "sameline.off", "OFF 4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0.5\n3 0 1 2\n3 0 2 3\n")));
   // Edge count is optional and its value ignored.
@@ -68,9 +72,9 @@ TEST(LoadOff, ExtraVertexAndFaceValuesAreIgnored)
 TEST(LoadOff, PolygonsAreFanTriangulatedInOrder)
 {
   // A pentagon then a quad: (v0, v_{k-1}, v_k) for k = 2..n-1.
-  const TriangleMesh m = io::loadOff(writeScratchFile(
-      "poly.off", "OFF\n6 2 0\n0 0 0\n1 0 0\n2 1 0\n1 2 0\n0 1 0\n5 5 5\n"
-                  "5 0 1 2 3 4\n4 5 4 3 2\n"));
+  const TriangleMesh m = io::loadOff(
+      writeScratchFile("poly.off", "OFF\n6 2 0\n0 0 0\n1 0 0\n2 1 0\n1 2 0\n0 1 0\n5 5 5\n"
+                                   "5 0 1 2 3 4\n4 5 4 3 2\n"));
   ASSERT_EQ(m.numFaces(), 5u);
   EXPECT_EQ(m.faces[0], Eigen::Vector3i(0, 1, 2));
   EXPECT_EQ(m.faces[1], Eigen::Vector3i(0, 2, 3));
@@ -153,8 +157,7 @@ TEST(LoadOffErrors, TruncatedVertexList)
   EXPECT_TRUE(offFails("truncv.off",
                        "OFF\n4 1 0\n0.000000 0.000000 0.000000\n1.000000 0.000000 0.000000\n"
                        "1.000000 1.000000 0.000000\n",
-                       5,
-                       "file ends after 3 of 4 vertices"));
+                       5, "file ends after 3 of 4 vertices"));
 }
 
 TEST(LoadOffErrors, TruncatedFaceList)
@@ -185,10 +188,10 @@ TEST(LoadOffErrors, NonNumericCoordinate)
 TEST(LoadOffErrors, NonFiniteCoordinate)
 {
   EXPECT_TRUE(offFails("nan.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n", 5, "not finite"));
-  EXPECT_TRUE(offFails("inf.off", "OFF\n3 1 0\n0 0 -inf\n1 0 0\n0 1 0\n3 0 1 2\n", 3,
-                       "not finite"));
-  EXPECT_TRUE(offFails("big.off", "OFF\n3 1 0\n0 0 0\n1e999 0 0\n0 1 0\n3 0 1 2\n", 4,
-                       "out of range"));
+  EXPECT_TRUE(
+      offFails("inf.off", "OFF\n3 1 0\n0 0 -inf\n1 0 0\n0 1 0\n3 0 1 2\n", 3, "not finite"));
+  EXPECT_TRUE(
+      offFails("big.off", "OFF\n3 1 0\n0 0 0\n1e999 0 0\n0 1 0\n3 0 1 2\n", 4, "out of range"));
 }
 
 TEST(LoadOffErrors, FaceWithFewerThanThreeVertices)
@@ -224,10 +227,11 @@ TEST(LoadOffErrors, BinaryJunk)
 
 TEST(SaveOff, RoundTripIsExact)
 {
-  TriangleMesh m({{0.1, 1.0 / 3.0, -0.0},
-                  {1e-300, -2.5e17, std::nextafter(1.0, 2.0)},
-                  {std::numeric_limits<double>::max(), std::numeric_limits<double>::denorm_min(), 7}},
-                 {{0, 1, 2}, {2, 1, 0}});
+  TriangleMesh m(
+      {{0.1, 1.0 / 3.0, -0.0},
+       {1e-300, -2.5e17, std::nextafter(1.0, 2.0)},
+       {std::numeric_limits<double>::max(), std::numeric_limits<double>::denorm_min(), 7}},
+      {{0, 1, 2}, {2, 1, 0}});
   const std::string path = segmat::test::scratchDir() + "roundtrip.off";
   io::saveOff(path, m);
   const TriangleMesh back = io::loadOff(path);

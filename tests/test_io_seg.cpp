@@ -18,8 +18,8 @@ namespace {
 segFails(const std::string& name, const std::string& text, long expected, long line,
          const std::string& needle)
 {
-  const std::string path = writeScratchFile(name, text);
-  return throwsFileError([&] { io::loadSeg(path, expected); }, path, line, needle);
+  return segmat::test::loadingFails([&](const std::string& p) { io::loadSeg(p, expected); }, name,
+                                    text, line, needle);
 }
 } // namespace
 

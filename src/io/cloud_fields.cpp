@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <fstream>
 
 namespace segmat {
 namespace io {
@@ -20,6 +21,16 @@ at(const std::uint8_t* p)
   T value;
   std::memcpy(&value, p, sizeof value); // unaligned-safe
   return static_cast<double>(value);
+}
+
+using Reader = double (*)(const std::uint8_t*);
+
+template <typename T>
+void
+reader(Reader& read, std::size_t& size)
+{
+  read = at<T>;
+  size = sizeof(T);
 }
 } // namespace
 
@@ -37,19 +48,19 @@ readFieldAsDouble(const pcl::PCLPointCloud2& cloud, int field)
 {
   const pcl::PCLPointField& f = cloud.fields[field];
   const std::size_t n = static_cast<std::size_t>(cloud.width) * cloud.height;
-  double (*read)(const std::uint8_t*) = nullptr;
+  Reader read = nullptr;
   std::size_t size = 0;
   switch (f.datatype) {
-  case pcl::PCLPointField::INT8: read = at<std::int8_t>; size = 1; break;
-  case pcl::PCLPointField::UINT8: read = at<std::uint8_t>; size = 1; break;
-  case pcl::PCLPointField::INT16: read = at<std::int16_t>; size = 2; break;
-  case pcl::PCLPointField::UINT16: read = at<std::uint16_t>; size = 2; break;
-  case pcl::PCLPointField::INT32: read = at<std::int32_t>; size = 4; break;
-  case pcl::PCLPointField::UINT32: read = at<std::uint32_t>; size = 4; break;
-  case pcl::PCLPointField::INT64: read = at<std::int64_t>; size = 8; break;
-  case pcl::PCLPointField::UINT64: read = at<std::uint64_t>; size = 8; break;
-  case pcl::PCLPointField::FLOAT32: read = at<float>; size = 4; break;
-  case pcl::PCLPointField::FLOAT64: read = at<double>; size = 8; break;
+  case pcl::PCLPointField::INT8: reader<std::int8_t>(read, size); break;
+  case pcl::PCLPointField::UINT8: reader<std::uint8_t>(read, size); break;
+  case pcl::PCLPointField::INT16: reader<std::int16_t>(read, size); break;
+  case pcl::PCLPointField::UINT16: reader<std::uint16_t>(read, size); break;
+  case pcl::PCLPointField::INT32: reader<std::int32_t>(read, size); break;
+  case pcl::PCLPointField::UINT32: reader<std::uint32_t>(read, size); break;
+  case pcl::PCLPointField::INT64: reader<std::int64_t>(read, size); break;
+  case pcl::PCLPointField::UINT64: reader<std::uint64_t>(read, size); break;
+  case pcl::PCLPointField::FLOAT32: reader<float>(read, size); break;
+  case pcl::PCLPointField::FLOAT64: reader<double>(read, size); break;
   default:
     throw Error("field '" + f.name + "' has an unknown type (" + std::to_string(f.datatype) + ")");
   }
@@ -65,7 +76,7 @@ readFieldAsDouble(const pcl::PCLPointCloud2& cloud, int field)
 }
 
 bool
-hasFields(const pcl::PCLPointCloud2& cloud, const char* const (&names)[3])
+hasFields(const pcl::PCLPointCloud2& cloud, const std::array<const char*, 3>& names)
 {
   for (const char* name : names)
     if (findField(cloud, name) < 0)
@@ -74,7 +85,7 @@ hasFields(const pcl::PCLPointCloud2& cloud, const char* const (&names)[3])
 }
 
 std::vector<Eigen::Vector3d>
-readVectorField(const pcl::PCLPointCloud2& cloud, const char* const (&names)[3])
+readVectorField(const pcl::PCLPointCloud2& cloud, const std::array<const char*, 3>& names)
 {
   std::vector<Eigen::Vector3d> out(static_cast<std::size_t>(cloud.width) * cloud.height);
   for (int k = 0; k < 3; ++k) {
@@ -86,6 +97,21 @@ readVectorField(const pcl::PCLPointCloud2& cloud, const char* const (&names)[3])
       out[i][k] = values[i];
   }
   return out;
+}
+
+void
+runPclReader(const std::string& path, const char* format, const std::function<bool()>& read)
+{
+  if (!std::ifstream(path))
+    throw Error(path, 0, "cannot open the file (missing or unreadable)");
+  bool ok = false;
+  try {
+    ok = read();
+  } catch (const std::exception& e) {
+    throw Error(path, 0, std::string("not a readable ") + format + " file: " + e.what());
+  }
+  if (!ok)
+    throw Error(path, 0, std::string("not a readable ") + format + " file (PCL's reader failed)");
 }
 
 } // namespace detail

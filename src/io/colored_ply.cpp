@@ -18,8 +18,9 @@ labelColors(const std::string& path, const std::vector<int>& labels, std::size_t
             const char* what)
 {
   if (labels.size() != expected)
-    throw Error(path, 0, "not written: " + std::to_string(labels.size()) + " labels for " +
-                             std::to_string(expected) + " " + what);
+    throw Error(path, 0,
+                "not written: " + std::to_string(labels.size()) + " labels for " +
+                    std::to_string(expected) + " " + what);
   std::vector<Rgb> colors(labels.size());
   for (std::size_t i = 0; i < labels.size(); ++i)
     colors[i] = labelColor(labels[i]);

@@ -43,8 +43,7 @@ readValues(const TextFile& file, Tokens& tokens, const char* tag, const Parse& p
 
 // An edge or triangle with the line it came from: indices are checked once every sphere is known,
 // so the order of the v/e/f lines does not matter.
-template <typename Cell>
-struct Located
+template <typename Cell> struct Located
 {
   Cell cell;
   long line;
@@ -103,7 +102,9 @@ loadMa(const std::string& path)
   std::vector<Located<Eigen::Vector2i>> edges;
   std::vector<Located<Eigen::Vector3i>> triangles;
   // The header only sizes the buffers, and never beyond what the file could hold.
-  const auto cap = [&](long count) { return static_cast<std::size_t>(std::clamp<long>(count, 0, file.size() / 6)); };
+  const auto cap = [&](long count) {
+    return static_cast<std::size_t>(std::clamp<long>(count, 0, file.size() / 6));
+  };
   centers.reserve(cap(header[0]));
   radii.reserve(cap(header[0]));
   edges.reserve(cap(header[1]));

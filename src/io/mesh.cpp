@@ -2,7 +2,8 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  */
-#include "ply_header.h"
+#include "cloud_fields.h"
+#include "file_headers.h"
 #include "ply_text.h"
 #include "text_file.h"
 
@@ -18,7 +19,7 @@
 // The only file that includes VTK-based PCL I/O (heavy headers, VTK link interface).
 #include <pcl/io/vtk_lib_io.h>
 
-#include <fstream>
+#include <functional>
 
 namespace segmat {
 namespace io {
@@ -26,28 +27,13 @@ namespace {
 const char* const kLoadFormats = ".off, .ply, .obj, .stl";
 const char* const kSaveFormats = ".off, .ply, .obj";
 
-// Runs one of PCL's mesh readers and turns every way it can fail (a return code, an exception, an
-// unusable result) into segmat::Error naming the file. PCL prints its own reason to the console.
-template <typename Reader>
 TriangleMesh
-loadWithPcl(const std::string& path, const char* format, const Reader& read)
+loadWithPcl(const std::string& path, const char* format,
+            const std::function<bool(pcl::PolygonMesh&)>& read)
 {
-  if (!std::ifstream(path))
-    throw Error(path, 0, "cannot open the file (missing or unreadable)");
   pcl::PolygonMesh polygons;
-  bool ok = false;
-  try {
-    ok = read(polygons);
-  } catch (const std::exception& e) {
-    throw Error(path, 0, std::string("not a readable ") + format + " file: " + e.what());
-  }
-  if (!ok)
-    throw Error(path, 0, std::string("not a readable ") + format + " file (PCL's reader failed)");
-  try {
-    return fromPolygonMesh(polygons);
-  } catch (const Error& e) {
-    throw Error(path, 0, e.message());
-  }
+  detail::runPclReader(path, format, [&] { return read(polygons); });
+  return detail::withPath(path, [&] { return fromPolygonMesh(polygons); });
 }
 } // namespace
 
@@ -59,19 +45,18 @@ loadMesh(const std::string& path)
     return loadOff(path);
   if (ext == "ply") {
     detail::checkPlyHeader(path);
-    return loadWithPcl(path, "PLY", [&](pcl::PolygonMesh& m) {
-      return pcl::io::loadPLYFile(path, m) >= 0;
-    });
+    return loadWithPcl(path, "PLY",
+                       [&](pcl::PolygonMesh& m) { return pcl::io::loadPLYFile(path, m) >= 0; });
   }
   if (ext == "obj") // segmat's reader: PCL's crashes on damaged OBJ files
     return loadObj(path);
-  if (ext == "stl")
+  if (ext == "stl") {
+    detail::checkStlSize(path);
     // Returns the number of points read; VTK reports a bad file by reading none.
-    return loadWithPcl(path, "STL", [&](pcl::PolygonMesh& m) {
-      return pcl::io::loadPolygonFileSTL(path, m) > 0;
-    });
-  throw Error(path, 0,
-              "unknown mesh format '." + ext + "' (supported: " + kLoadFormats + ")");
+    return loadWithPcl(
+        path, "STL", [&](pcl::PolygonMesh& m) { return pcl::io::loadPolygonFileSTL(path, m) > 0; });
+  }
+  throw Error(path, 0, "unknown mesh format '." + ext + "' (supported: " + kLoadFormats + ")");
 }
 
 void
@@ -83,7 +68,8 @@ saveMesh(const std::string& path, const TriangleMesh& mesh)
   if (ext == "obj")
     return saveObj(path, mesh);
   if (ext != "ply")
-    throw Error(path, 0, "cannot write mesh format '." + ext + "' (supported: " + kSaveFormats + ")");
+    throw Error(path, 0,
+                "cannot write mesh format '." + ext + "' (supported: " + kSaveFormats + ")");
   detail::checkMeshForWriting(path, mesh);
   detail::writeTextAtomically(path, detail::plyText(mesh.vertices, nullptr, &mesh.faces, nullptr));
 }

@@ -93,7 +93,8 @@ TextFile::TextFile(const std::string& path, const char* format_name, bool hash_c
       char hex[8];
       std::snprintf(hex, sizeof hex, "0x%02x", c);
       throw Error(path, line,
-                  std::string("binary data (byte ") + hex + "): not a text " + format_name_ + " file");
+                  std::string("binary data (byte ") + hex + "): not a text " + format_name_ +
+                      " file");
     }
   }
 }
@@ -226,8 +227,9 @@ checkMeshForWriting(const std::string& path, const TriangleMesh& mesh)
   for (std::size_t f = 0; f < mesh.faces.size(); ++f)
     for (int k = 0; k < 3; ++k)
       if (mesh.faces[f][k] < 0 || mesh.faces[f][k] >= n)
-        throw Error(path, 0, "not written: face " + std::to_string(f) + " refers to vertex " +
-                                 std::to_string(mesh.faces[f][k]) + " of " + std::to_string(n));
+        throw Error(path, 0,
+                    "not written: face " + std::to_string(f) + " refers to vertex " +
+                        std::to_string(mesh.faces[f][k]) + " of " + std::to_string(n));
 }
 
 std::string

@@ -5,8 +5,8 @@
 #pragma once
 
 // Private to src/io: the line reader, number parsing and number formatting that the OFF, SEG and
-// MA readers and writers share. Whole-file read + std::from_chars: no iostream per token (a 30k-face
-// OFF parses in a few milliseconds) and no dependence on the C locale's decimal point.
+// MA readers and writers share. Whole-file read + std::from_chars: no iostream per token (a
+// 30k-face OFF parses in a few milliseconds) and no dependence on the C locale's decimal point.
 
 #include <segmat/geometry/triangle_mesh.h>
 
@@ -21,7 +21,9 @@ namespace detail {
 class Tokens
 {
 public:
-  explicit Tokens(std::string_view line) : rest_(line) {}
+  explicit Tokens(std::string_view line) : rest_(line)
+  {
+  }
 
   /** \brief Next token; false when the line is used up. */
   bool
@@ -49,7 +51,8 @@ public:
    */
   TextFile(const std::string& path, const char* format_name, bool hash_comments);
 
-  /** \brief Next line with content, trimmed of CR, comments and surrounding blanks; false at EOF. */
+  /** \brief Next line with content, trimmed of CR, comments and surrounding blanks; false at EOF.
+   */
   bool
   nextLine(std::string_view& line);
 

@@ -61,11 +61,11 @@ throwsFileError(const std::function<void()>& action, const std::string& path, lo
   } catch (const segmat::Error& e) {
     const std::string what = e.what();
     if (e.path() != path)
-      return ::testing::AssertionFailure() << "path is '" << e.path() << "', not '" << path
-                                           << "': " << what;
+      return ::testing::AssertionFailure()
+             << "path is '" << e.path() << "', not '" << path << "': " << what;
     if (e.line() != line)
-      return ::testing::AssertionFailure() << "line is " << e.line() << ", not " << line << ": "
-                                           << what;
+      return ::testing::AssertionFailure()
+             << "line is " << e.line() << ", not " << line << ": " << what;
     if (what.find(path) == std::string::npos)
       return ::testing::AssertionFailure() << "message lacks the path: " << what;
     if (line > 0 && what.find(":" + std::to_string(line) + ":") == std::string::npos)
@@ -77,6 +77,14 @@ throwsFileError(const std::function<void()>& action, const std::string& path, lo
     return ::testing::AssertionFailure() << "threw another exception: " << e.what();
   }
   return ::testing::AssertionFailure() << "did not throw";
+}
+
+::testing::AssertionResult
+loadingFails(const std::function<void(const std::string& path)>& load, const std::string& name,
+             const std::string& bytes, long line, const std::string& needle)
+{
+  const std::string path = writeScratchFile(name, bytes);
+  return throwsFileError([&] { load(path); }, path, line, needle);
 }
 
 ::testing::AssertionResult

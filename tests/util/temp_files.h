@@ -32,6 +32,12 @@ fileExists(const std::string& path);
 throwsFileError(const std::function<void()>& action, const std::string& path, long line,
                 const std::string& needle = "");
 
+/** \brief Writes \a bytes to scratch file \a name and checks that \a load(path) throws
+ * segmat::Error at \a line with \a needle in its message (see throwsFileError). */
+::testing::AssertionResult
+loadingFails(const std::function<void(const std::string& path)>& load, const std::string& name,
+             const std::string& bytes, long line, const std::string& needle);
+
 /** \brief Loads damaged copies of \a bytes with \a load: every truncation (at most ~200, evenly
  * spaced) and 200 copies with one byte replaced (seeded, so the same every run). Each load must
  * either succeed or throw segmat::Error; returns a failure naming the first copy that threw
