@@ -6,12 +6,17 @@
 #include <segmat/medial/normal_orientation.h>
 #include <segmat/medial/voxel_sampling.h>
 
+#include "local_fit.h"
+#include "thread_count.h"
+
 #include <pcl/console/print.h>
 #include <pcl/features/normal_3d_omp.h>
+#include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/search/kdtree.h>
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <tuple>
 
 namespace segmat {
@@ -51,10 +56,57 @@ dropExactDuplicates(const pcl::PointCloud<pcl::PointNormal>& cloud, std::vector<
                   indices.end());
 }
 
+/// One pass of robust quadratic (MLS-like) smoothing: every point moves onto the height field
+/// fitted to its k nearest neighbours (detail::fitLocalStructure, sheet). A plane fit would
+/// pull thin tubes inwards by about a²/(4R) (a the neighbourhood's size); a quadratic does not.
+/// Returns the median move divided by the median distance to the nearest neighbour (0 when
+/// nothing moved): about 0 on a clean sample, about the noise over the spacing on a noisy one.
+double
+smoothSurface(std::vector<Eigen::Vector3f>& positions, int k, int threads)
+{
+  const int n = static_cast<int>(positions.size());
+  if (n < 6)
+    return 0.0;
+  std::vector<float> moves(n, 0.0f), spacing(n, 0.0f);
+  const auto cloud = detail::toXYZ(positions);
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud(cloud);
+  const int kk = std::min(k, n);
+  std::vector<Eigen::Vector3f> moved(positions);
+#pragma omp parallel num_threads(threads)
+  {
+    pcl::Indices nn;
+    std::vector<float> d2;
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      if (tree.nearestKSearch((*cloud)[i], kk, nn, d2) < 6 || !(d2.back() > 0.0f))
+        continue;
+      const double support = std::sqrt(double(d2.back()));
+      moved[i] = detail::fitLocalStructure(positions, i, nn, d2, support,
+                                           detail::LocalShape::Sheet, support)
+                     .cast<float>();
+      moves[i] = (moved[i] - positions[i]).norm();
+      spacing[i] = std::sqrt(d2[1]); // d2[0] is the point itself
+    }
+  }
+  positions.swap(moved);
+  auto median = [](std::vector<float>& v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return double(v[v.size() / 2]);
+  };
+  const double typical_spacing = median(spacing);
+  return typical_spacing > 0.0 ? median(moves) / typical_spacing : 0.0;
+}
+
 } // namespace
 
 CloudPreprocessing::CloudPreprocessing()
-: working_size_(20000), normal_k_(16), orientation_k_(10), use_input_normals_(true), threads_(0)
+: working_size_(20000)
+, normal_k_(16)
+, orientation_k_(10)
+, smoothing_iterations_(5)
+, use_input_normals_(true)
+, threads_(0)
 {}
 
 void
@@ -90,11 +142,23 @@ CloudPreprocessing::setOrientationKSearch(int k)
   orientation_k_ = k;
 }
 
+void
+CloudPreprocessing::setSmoothingIterations(int iterations)
+{
+  if (iterations < 0) {
+    PCL_WARN("[segmat::CloudPreprocessing::setSmoothingIterations] The count must be >= 0; "
+             "keeping %d.\n", smoothing_iterations_);
+    return;
+  }
+  smoothing_iterations_ = iterations;
+}
+
 bool
 CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
 {
   working.clear();
   working_indices_.clear();
+  input_to_working_.clear();
   normals_estimated_ = false;
   if (!input_ || input_->empty()) {
     PCL_ERROR("[segmat::CloudPreprocessing::compute] No input cloud, or it is empty.\n");
@@ -131,7 +195,17 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
   std::vector<Eigen::Vector3f> positions(candidates.size());
   for (std::size_t i = 0; i < candidates.size(); ++i)
     positions[i] = in[candidates[i]].getVector3fMap();
-  std::vector<int> kept = voxelRepresentativesNear(positions, working_size_);
+  // representative[c]: the candidate (position in candidates) standing for candidate c.
+  std::vector<int> representative(candidates.size());
+  const double voxel = voxelSizeForCount(positions, working_size_);
+  std::vector<int> kept;
+  if (voxel > 0.0)
+    kept = voxelRepresentatives(positions, voxel, &representative);
+  else {
+    kept.resize(candidates.size());
+    std::iota(kept.begin(), kept.end(), 0);
+    representative = kept;
+  }
   for (int& k : kept)
     k = candidates[k];
   dropExactDuplicates(in, kept);
@@ -150,13 +224,21 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
       cloud[i].getNormalVector3fMap().normalize();
   }
 
-  // 3. Estimated normals: PCA, then MST orientation.
+  // 3. Estimated normals: smoothing, PCA, then MST orientation.
   if (estimate) {
     normals_estimated_ = true;
-    pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
-    xyz->resize(cloud.size());
+    const int threads = detail::threadCount(threads_);
+    std::vector<Eigen::Vector3f> positions(cloud.size());
     for (std::size_t i = 0; i < cloud.size(); ++i)
-      (*xyz)[i].getVector3fMap() = cloud[i].getVector3fMap();
+      positions[i] = cloud[i].getVector3fMap();
+    // Passes go on while they still move points by a noticeable part of the spacing: a clean
+    // sample stops after one, a noisy scan gets up to the maximum.
+    for (int it = 0; it < smoothing_iterations_; ++it)
+      if (smoothSurface(positions, 2 * normal_k_, threads) < 0.05)
+        break;
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      cloud[i].getVector3fMap() = positions[i];
+    const pcl::PointCloud<pcl::PointXYZ>::Ptr xyz = detail::toXYZ(positions);
     pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> estimation(threads_);
     estimation.setInputCloud(xyz);
     estimation.setSearchMethod(pcl::search::KdTree<pcl::PointXYZ>::Ptr(
@@ -192,6 +274,38 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
     orientation.setKSearch(orientation_k_);
     if (!orientation.orient(cloud))
       return false;
+  }
+
+  // Every finite input point's stand-in: its voxel representative when that survived, else
+  // the nearest working point (dropped duplicates, dropped normals).
+  std::vector<int> working_of_input(in.size(), -1);
+  for (std::size_t w = 0; w < kept.size(); ++w)
+    working_of_input[kept[w]] = static_cast<int>(w);
+  input_to_working_.assign(in.size(), -1);
+  std::vector<int> unresolved;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    const int w = working_of_input[candidates[representative[c]]];
+    if (w >= 0)
+      input_to_working_[candidates[c]] = w;
+  }
+  for (std::size_t i = 0; i < in.size(); ++i)
+    if (input_to_working_[i] < 0 && finitePoint(in[i]))
+      unresolved.push_back(static_cast<int>(i));
+  if (!unresolved.empty()) {
+    pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
+    xyz->resize(cloud.size());
+    for (std::size_t w = 0; w < cloud.size(); ++w)
+      (*xyz)[w].getVector3fMap() = cloud[w].getVector3fMap();
+    pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+    tree.setInputCloud(xyz);
+    pcl::Indices nn;
+    std::vector<float> d2;
+    pcl::PointXYZ query;
+    for (int i : unresolved) {
+      query.getVector3fMap() = in[i].getVector3fMap();
+      if (tree.nearestKSearch(query, 1, nn, d2) > 0)
+        input_to_working_[i] = nn[0];
+    }
   }
 
   working.swap(cloud);

@@ -8,6 +8,7 @@
 #include <segmat/medial/voxel_sampling.h>
 #include <segmat/medial/impl/meso_skeleton_estimation.hpp>
 
+#include "local_fit.h"
 #include "thread_count.h"
 
 #include <pcl/console/print.h>
@@ -30,32 +31,6 @@ secondsSince(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-pcl::PointCloud<pcl::PointXYZ>::Ptr
-toXYZ(const std::vector<Eigen::Vector3f>& points)
-{
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
-  cloud->resize(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    (*cloud)[i].getVector3fMap() = points[i];
-  return cloud;
-}
-
-/// Eigen-decomposition of the covariance of \a points[nn] (ascending eigenvalues).
-Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>
-neighbourhoodPca(const std::vector<Eigen::Vector3f>& points, const pcl::Indices& nn)
-{
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (int j : nn)
-    mean += points[j].cast<double>();
-  mean /= double(nn.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (int j : nn) {
-    const Eigen::Vector3d d = points[j].cast<double>() - mean;
-    cov += d * d.transpose();
-  }
-  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov / double(nn.size()));
-}
-
 double
 workingDiagonal(const pcl::PointCloud<pcl::PointNormal>& cloud)
 {
@@ -75,22 +50,6 @@ angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
   if (la == 0.0 || lb == 0.0)
     return 0.0;
   return std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0));
-}
-
-/// A neighbourhood is curve-like when its middle spread is small next to its largest.
-constexpr double kCurveRatio = 0.1;
-
-bool
-curveLike(const Eigen::Vector3d& eigenvalues)
-{
-  return eigenvalues[1] < kCurveRatio * eigenvalues[2];
-}
-
-/// Sheet-like: thin in one direction only (checked after curveLike).
-bool
-sheetLike(const Eigen::Vector3d& eigenvalues)
-{
-  return eigenvalues[0] < kCurveRatio * eigenvalues[1];
 }
 
 /// Radius-outlier filter: keeps i when r_i / median(r of its k nearest) is in [1/ratio, ratio].
@@ -137,44 +96,10 @@ radiusInliers(const std::vector<Eigen::Vector3f>& centres, const std::vector<flo
   return kept;
 }
 
-/// Weighted least-squares fit of values_a ≈ c·basis_a, evaluated at basis_at_point. The basis
-/// is ordered constant, linear, quadratic terms (1, t, t² or 1, u, v, u², uv, v²): the full
-/// quadratic is tried first, then the linear and constant heads, as long as there are fewer
-/// points than terms + 2 or the system is rank-deficient.
-template <int Dim>
-Eigen::Matrix<double, Dim, 1>
-fitAndEvaluate(const std::vector<Eigen::VectorXd>& basis, const std::vector<double>& weights,
-               const std::vector<Eigen::Matrix<double, Dim, 1>>& values,
-               const Eigen::VectorXd& basis_at_point)
-{
-  const int terms = static_cast<int>(basis_at_point.size());
-  const int linear = terms == 6 ? 3 : 2;
-  for (int used : {terms, linear, 1}) {
-    if (used > 1 && static_cast<int>(basis.size()) < used + 2)
-      continue;
-    Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(used, used);
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(used, Dim);
-    for (std::size_t a = 0; a < basis.size(); ++a) {
-      const Eigen::VectorXd phi = basis[a].head(used);
-      gram += weights[a] * phi * phi.transpose();
-      rhs += weights[a] * phi * values[a].transpose();
-    }
-    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(gram);
-    if (qr.rank() < used)
-      continue;
-    const Eigen::MatrixXd coefficients = qr.solve(rhs);
-    return coefficients.transpose() * basis_at_point.head(used);
-  }
-  return Eigen::Matrix<double, Dim, 1>::Zero();
-}
-
-/// One contraction pass: each centre is replaced by a weighted least-squares fit of the centres
-/// within rho·r of it (at most the 64 nearest, Gaussian weights), evaluated at its own place
-/// along the structure: a quadratic curve for a curve-like neighbourhood (moved in the plane
-/// normal to the curve), a quadratic height field for a sheet (moved along the normal), the
-/// weighted mean for a blob. A quadratic fit, unlike the plain mean, does not pull points
-/// towards the inside of a bent sheet or curve (a mean-based pass shrinks a circle of radius R
-/// by about (rho·r)²/(6R) per pass). Jacobi update: every move uses the old positions.
+/// One contraction pass: each centre is replaced by fitLocalStructure() of the centres within
+/// rho·r of it (at most the 64 nearest): moved across its sheet or curve, or to the mean of a
+/// blob. The tight residual scale (0.1 × support) lets the fit follow one branch where two
+/// meet (the corner of a bent tube). Jacobi update: every move uses the old positions.
 void
 contractOnce(std::vector<Eigen::Vector3f>& centres, const std::vector<float>& radii, float rho,
              int threads)
@@ -190,59 +115,13 @@ contractOnce(std::vector<Eigen::Vector3f>& centres, const std::vector<float>& ra
   {
     pcl::Indices nn;
     std::vector<float> d2;
-    std::vector<double> weights;
-    std::vector<Eigen::VectorXd> basis;
 #pragma omp for schedule(static)
     for (int i = 0; i < n; ++i) {
       const double support = double(rho) * radii[i];
-      if (!(support > 0.0) || tree.radiusSearch((*cloud)[i], support, nn, d2, 64) < 3)
-        continue;
-      weights.resize(nn.size());
-      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-      double weight = 0.0;
-      for (std::size_t a = 0; a < nn.size(); ++a) {
-        weights[a] = std::exp(-double(d2[a]) / (support * support));
-        mean += weights[a] * centres[nn[a]].cast<double>();
-        weight += weights[a];
-      }
-      mean /= weight;
-      const auto pca = neighbourhoodPca(centres, nn);
-      const Eigen::Matrix3d& frame = pca.eigenvectors(); // columns: smallest .. largest
-      const Eigen::Vector3d own = centres[i].cast<double>() - mean;
-      Eigen::Vector3d result = mean; // blob
-      basis.resize(nn.size());
-      if (curveLike(pca.eigenvalues())) {
-        // across(t) in the (e0, e1) plane, t along e2.
-        std::vector<Eigen::Vector2d> across(nn.size());
-        for (std::size_t a = 0; a < nn.size(); ++a) {
-          const Eigen::Vector3d d = centres[nn[a]].cast<double>() - mean;
-          const double t = d.dot(frame.col(2));
-          basis[a] = Eigen::Vector3d(1.0, t, t * t);
-          across[a] = Eigen::Vector2d(d.dot(frame.col(0)), d.dot(frame.col(1)));
-        }
-        const double t = own.dot(frame.col(2));
-        const Eigen::Vector2d fit =
-            fitAndEvaluate<2>(basis, weights, across, Eigen::Vector3d(1.0, t, t * t));
-        result = mean + t * frame.col(2) + fit[0] * frame.col(0) + fit[1] * frame.col(1);
-      }
-      else if (sheetLike(pca.eigenvalues())) {
-        // height(u, v) along e0 over the (e1, e2) plane.
-        std::vector<Eigen::Matrix<double, 1, 1>> height(nn.size());
-        auto phi = [](double u, double v) {
-          Eigen::VectorXd b(6);
-          b << 1.0, u, v, u * u, u * v, v * v;
-          return b;
-        };
-        for (std::size_t a = 0; a < nn.size(); ++a) {
-          const Eigen::Vector3d d = centres[nn[a]].cast<double>() - mean;
-          basis[a] = phi(d.dot(frame.col(1)), d.dot(frame.col(2)));
-          height[a](0) = d.dot(frame.col(0));
-        }
-        const double u = own.dot(frame.col(1)), v = own.dot(frame.col(2));
-        const double h = fitAndEvaluate<1>(basis, weights, height, phi(u, v))(0);
-        result = mean + u * frame.col(1) + v * frame.col(2) + h * frame.col(0);
-      }
-      moved[i] = result.cast<float>();
+      if (support > 0.0 && tree.radiusSearch((*cloud)[i], support, nn, d2, 64) >= 3)
+        moved[i] = fitLocalStructure(centres, i, nn, d2, support, LocalShape::Unknown,
+                                     0.1 * support)
+                       .cast<float>();
     }
   }
   centres.swap(moved);
@@ -302,11 +181,12 @@ bool
 estimateMesoSkeleton(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, bool has_normals,
                      const MesoSkeletonParameters& params, pcl::PointCloud<MedialPoint>& skeleton,
                      pcl::PointCloud<pcl::PointNormal>& working, std::vector<int>& working_indices,
-                     MesoSkeletonStatistics& stats)
+                     std::vector<int>& input_to_working, MesoSkeletonStatistics& stats)
 {
   skeleton.clear();
   working.clear();
   working_indices.clear();
+  input_to_working.clear();
   stats = MesoSkeletonStatistics();
   stats.input_points = cloud ? cloud->size() : 0;
   const int threads = threadCount(params.threads);
@@ -318,12 +198,14 @@ estimateMesoSkeleton(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, b
   preprocessing.setWorkingSize(params.working_size);
   preprocessing.setNormalKSearch(params.normal_k);
   preprocessing.setOrientationKSearch(params.orientation_k);
+  preprocessing.setSmoothingIterations(params.smoothing_iterations);
   preprocessing.setUseInputNormalsFlag(has_normals);
   preprocessing.setNumberOfThreads(static_cast<unsigned int>(threads));
   pcl::PointCloud<pcl::PointNormal>::Ptr surface(new pcl::PointCloud<pcl::PointNormal>);
   if (!preprocessing.compute(*surface))
     return false;
   working_indices = preprocessing.getWorkingIndices();
+  input_to_working = preprocessing.getInputToWorking();
   working = *surface;
   stats.working_points = surface->size();
   stats.normals_estimated = preprocessing.getNormalsEstimated();
@@ -388,18 +270,20 @@ estimateMesoSkeleton(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, b
     return false;
   }
 
-  // 4. Reduction, contraction, reduction. The first reduction (voxel centroids: averaging also
-  // cancels part of the centres' scatter) makes the contraction cheap; the contraction pulls
-  // the rest of the scatter onto sheets and curves, which can bring points of neighbouring
-  // voxels together; the second reduction at the same voxel size merges those.
+  // 4. Reduction, contraction, reduction. The first reduction (voxel centroids, to about twice
+  // the target: averaging also cancels part of the centres' scatter) makes the contraction
+  // cheap; the contraction pulls the rest of the scatter onto sheets and curves; the second
+  // reduction, with a voxel size fitted again on the contracted points (which now lie on
+  // lower-dimensional sets), brings the count to about the target.
   // A minimum voxel keeps the blob of balls at a sphere's centre a few points.
-  const double cell_size = voxelSizeForCount(kept, params.target_size,
-                                             params.min_spacing * workingDiagonal(*surface));
-  VoxelMerge merged = mergeByVoxel(kept, kept_radii, ball_of, cell_size);
+  const double min_cell = params.min_spacing * workingDiagonal(*surface);
+  VoxelMerge merged = mergeByVoxel(
+      kept, kept_radii, ball_of, voxelSizeForCount(kept, 2 * params.target_size, min_cell));
   for (int it = 0; it < params.contraction_iterations; ++it)
     contractOnce(merged.centroids, merged.radii, params.contraction_radius, threads);
-  if (params.contraction_iterations > 0)
-    merged = mergeByVoxel(merged.centroids, merged.radii, merged.representative, cell_size);
+  merged = mergeByVoxel(merged.centroids, merged.radii, merged.representative,
+                        voxelSizeForCount(merged.centroids, params.target_size, min_cell));
+
   // 6. Radius = distance to the working cloud; the radius-outlier test again on these final
   // radii (a centre left off its sheet has too small a ball); normal from the medial
   // neighbourhood.
@@ -483,7 +367,9 @@ estimateMesoSkeleton(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, b
         medial_tree.nearestKSearch((*medial_xyz)[i], normal_k, nn, d2);
         const auto pca = neighbourhoodPca(points, nn);
         if (pca.info() == Eigen::Success && pca.eigenvalues()[2] > 0.0)
-          normal = pca.eigenvectors().col(curveLike(pca.eigenvalues()) ? 2 : 0).cast<float>();
+          normal = pca.eigenvectors()
+                     .col(classifyShape(pca.eigenvalues()) == LocalShape::Curve ? 2 : 0)
+                     .cast<float>();
       }
       out.getNormalVector3fMap() = normal;
     }

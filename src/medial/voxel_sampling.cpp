@@ -99,7 +99,8 @@ voxelCellIndices(const std::vector<Eigen::Vector3f>& points, double voxel_size, 
 }
 
 std::vector<int>
-voxelRepresentatives(const std::vector<Eigen::Vector3f>& points, double voxel_size)
+voxelRepresentatives(const std::vector<Eigen::Vector3f>& points, double voxel_size,
+                     std::vector<int>* representative_of)
 {
   const VoxelGrid grid = makeGrid(points, voxel_size);
   struct Entry
@@ -120,9 +121,14 @@ voxelRepresentatives(const std::vector<Eigen::Vector3f>& points, double voxel_si
     return std::tie(a.key, a.distance, a.index) < std::tie(b.key, b.distance, b.index);
   });
   std::vector<int> kept;
-  for (std::size_t i = 0; i < entries.size(); ++i)
+  if (representative_of)
+    representative_of->assign(points.size(), -1);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
     if (i == 0 || entries[i].key != entries[i - 1].key)
       kept.push_back(entries[i].index);
+    if (representative_of)
+      (*representative_of)[entries[i].index] = kept.back();
+  }
   std::sort(kept.begin(), kept.end());
   return kept;
 }

@@ -25,9 +25,10 @@ namespace segmat {
  *     normal is non-finite or zero; if more than 1 % are bad the normals are estimated instead);
  *  2. keep one point per voxel (segmat::voxelRepresentativesNear) when there are more than
  *     the working size, then drop exact duplicates (lowest index kept);
- *  3. normals: the input's, normalised (default when it has them), or pcl::NormalEstimationOMP
- *     over k neighbours (the result does not depend on the thread count: every point's normal is
- *     computed alone), oriented by segmat::NormalOrientation.
+ *  3. normals: the input's, normalised (default when it has them); or, after
+ *     setSmoothingIterations() passes of robust quadratic smoothing of the positions,
+ *     pcl::NormalEstimationOMP over k neighbours (the result does not depend on the thread
+ *     count: every point's normal is computed alone), oriented by segmat::NormalOrientation.
  */
 class CloudPreprocessing
 {
@@ -36,8 +37,8 @@ public:
   using ConstPtr = std::shared_ptr<const CloudPreprocessing>;
   using PointCloudIn = pcl::PointCloud<pcl::PointNormal>;
 
-  /** \brief Defaults: working size 20000, normals from 16 neighbours, orientation over 10,
-   * input normals used, threads chosen by OpenMP.
+  /** \brief Defaults: working size 20000, normals from 16 neighbours, up to 5 smoothing passes,
+   * orientation over 10, input normals used, threads chosen by OpenMP.
    */
   CloudPreprocessing();
 
@@ -88,6 +89,23 @@ public:
     return orientation_k_;
   }
 
+  /** \brief Largest number of smoothing passes before normals are estimated (>= 0, default 5):
+   * each point moves onto a robust quadratic height field fitted to its 2·normal_k nearest
+   * neighbours (MLS-like); passes stop once the median move is below 5 % of the median spacing
+   * (a clean sample: one pass). Only clouds whose normals are estimated are smoothed: it takes
+   * scanner noise off before the shrinking balls, which stop on any sample that noise pushes
+   * inside a ball.
+   */
+  void
+  setSmoothingIterations(int iterations);
+
+  /** \brief Largest number of smoothing passes before normals are estimated. */
+  int
+  getSmoothingIterations() const
+  {
+    return smoothing_iterations_;
+  }
+
   /** \brief Use the input's normals (true, default) or estimate them (false). Input normals
    * are trusted to be oriented outward.
    */
@@ -133,6 +151,17 @@ public:
     return working_indices_;
   }
 
+  /** \brief For each input point, the working point that stands for it (from the last
+   * compute()): its voxel's representative, or the nearest working point when that
+   * representative was dropped (duplicate, unusable normal); -1 for non-finite points.
+   * Labels of the working cloud reach every input point through this map.
+   */
+  const std::vector<int>&
+  getInputToWorking() const
+  {
+    return input_to_working_;
+  }
+
   /** \brief True when the last compute() estimated the normals. */
   bool
   getNormalsEstimated() const
@@ -145,9 +174,11 @@ private:
   std::size_t working_size_;
   int normal_k_;
   int orientation_k_;
+  int smoothing_iterations_;
   bool use_input_normals_;
   unsigned int threads_;
   std::vector<int> working_indices_;
+  std::vector<int> input_to_working_;
   bool normals_estimated_ = false;
 };
 

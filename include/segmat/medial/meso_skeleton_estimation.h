@@ -22,6 +22,7 @@ struct MesoSkeletonParameters
   std::size_t working_size = 20000; ///< points kept for the medial step
   int normal_k = 16;                ///< neighbours of the PCA normal estimate
   int orientation_k = 10;           ///< neighbours of the MST orientation graph
+  int smoothing_iterations = 5;     ///< most surface smoothing passes when normals are estimated
   bool use_input_normals = true;    ///< keep the cloud's own normals when it has them
   // Shrinking balls (segmat::ShrinkingBallEstimation).
   std::size_t ball_count = 5000;     ///< surface points that get a ball (0: every working point)
@@ -40,7 +41,7 @@ struct MesoSkeletonParameters
   float contraction_radius = 1.0f; ///< neighbourhood radius, × the point's ball radius
   // Reduction and medial normals.
   std::size_t target_size = 2000; ///< about the size of SEG-MAT's base MAT
-  float min_spacing = 0.005f;     ///< smallest reduction voxel, × working-cloud diagonal
+  float min_spacing = 0.002f;     ///< smallest reduction voxel, × working-cloud diagonal
   int medial_normal_k = 10;       ///< neighbours of the PCA normal of a medial point
   unsigned int threads = 0;       ///< 0: OpenMP's choice; results do not depend on it
 };
@@ -70,6 +71,8 @@ namespace detail {
  * \param[out] skeleton the medial points; surface_index / contact_index index \a cloud
  * \param[out] working the resampled, oriented cloud the balls were computed on
  * \param[out] working_indices for each working point, its index in \a cloud
+ * \param[out] input_to_working for each point of \a cloud, the working point standing for it
+ *             (CloudPreprocessing::getInputToWorking(); -1: non-finite)
  * \param[out] stats sizes and timings
  * \return false (PCL_ERROR, empty skeleton) when the cloud cannot give a working cloud or no
  *         ball survives
@@ -78,7 +81,7 @@ bool
 estimateMesoSkeleton(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, bool has_normals,
                      const MesoSkeletonParameters& params, pcl::PointCloud<MedialPoint>& skeleton,
                      pcl::PointCloud<pcl::PointNormal>& working, std::vector<int>& working_indices,
-                     MesoSkeletonStatistics& stats);
+                     std::vector<int>& input_to_working, MesoSkeletonStatistics& stats);
 
 } // namespace detail
 
@@ -208,6 +211,16 @@ public:
     return working_indices_;
   }
 
+  /** \brief For each point of the input cloud, the working point standing for it (its voxel's
+   * representative, or the nearest working point); -1 for non-finite points and points outside
+   * the indices. Labels computed on the working cloud reach every input point through it.
+   */
+  const std::vector<int>&
+  getInputToWorking() const
+  {
+    return input_to_working_;
+  }
+
   /** \brief Sizes and timings of the last compute(). */
   const MesoSkeletonStatistics&
   getStatistics() const
@@ -225,6 +238,7 @@ private:
   MesoSkeletonParameters params_;
   pcl::PointCloud<pcl::PointNormal> working_;
   std::vector<int> working_indices_;
+  std::vector<int> input_to_working_;
   MesoSkeletonStatistics stats_;
 };
 

@@ -20,10 +20,13 @@ namespace segmat {
  * O(n log n), deterministic.
  * \param[in] points the points (all finite)
  * \param[in] voxel_size cell side (> 0; raised when the grid would exceed 2^21 cells per axis)
+ * \param[out] representative_of for every point, the index of its cell's representative; may
+ *             be nullptr
  * \return indices into \a points, ascending
  */
 std::vector<int>
-voxelRepresentatives(const std::vector<Eigen::Vector3f>& points, double voxel_size);
+voxelRepresentatives(const std::vector<Eigen::Vector3f>& points, double voxel_size,
+                     std::vector<int>* representative_of = nullptr);
 
 /** \brief The occupied cell of every point, numbered 0..cells−1 in the order of the cells'
  * (x, y, z) grid keys. Cells as in voxelRepresentatives().

@@ -114,6 +114,7 @@ MesoSkeletonEstimation<PointT>::compute(pcl::PointCloud<MedialPoint>& skeleton)
   skeleton.clear();
   working_.clear();
   working_indices_.clear();
+  input_to_working_.clear();
   stats_ = MesoSkeletonStatistics();
   if (!input_) {
     PCL_ERROR("[segmat::MesoSkeletonEstimation::compute] No input cloud.\n");
@@ -124,14 +125,20 @@ MesoSkeletonEstimation<PointT>::compute(pcl::PointCloud<MedialPoint>& skeleton)
     return false;
   }
   pcl::PointCloud<pcl::PointNormal>::Ptr cloud(new pcl::PointCloud<pcl::PointNormal>);
+  std::vector<int> copy_to_working;
   const bool has_normals = detail::copyToPointNormal(*input_, *indices_, *cloud);
   const bool ok = detail::estimateMesoSkeleton(cloud, has_normals && params_.use_input_normals,
                                                params_, skeleton, working_, working_indices_,
-                                               stats_);
+                                               copy_to_working, stats_);
   // Indices into the copy → indices into the input cloud.
   const pcl::Indices& map = *indices_;
   for (int& i : working_indices_)
     i = map[i];
+  if (!copy_to_working.empty()) {
+    input_to_working_.assign(input_->size(), -1);
+    for (std::size_t i = 0; i < map.size(); ++i)
+      input_to_working_[map[i]] = copy_to_working[i];
+  }
   for (MedialPoint& m : skeleton) {
     if (m.surface_index >= 0)
       m.surface_index = map[m.surface_index];
