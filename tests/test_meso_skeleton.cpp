@@ -39,9 +39,10 @@ skeletonOf(const typename pcl::PointCloud<PointT>::ConstPtr& cloud,
 }
 
 /// Checks a dumbbell skeleton: the medial axis is the x axis from −3 to 3; the radius is 0.3
-/// along the tube (|x| < 1.8) and 1 at the balls' centres (|x| ≈ 3). Where the tube meets a
-/// ball (the concave crease at |x| = 3 − √0.91 ≈ 2.05) a few centres may stray: at least 95 %
-/// must be on the axis.
+/// along the tube (|x| < 1.8) and 1 at the balls' centres (|x| ≈ 3; with estimated normals the
+/// centres of a ball's balls scatter by a few hundredths, and the radius of a centre d off
+/// the ball's centre is 1 − d). Where the tube meets a ball (the concave crease at
+/// |x| = 3 − √0.91 ≈ 2.05) a few centres may stray: at least 95 % must be on the axis.
 void
 expectDumbbell(const pcl::PointCloud<MedialPoint>& skeleton, std::size_t input_size)
 {
@@ -52,7 +53,7 @@ expectDumbbell(const pcl::PointCloud<MedialPoint>& skeleton, std::size_t input_s
     on_axis += off_axis < 0.05f;
     EXPECT_LT(std::abs(m.x), 3.2f);
     if (std::abs(std::abs(m.x) - 3.0f) < 0.05f) {
-      EXPECT_NEAR(m.radius, 1.0f, 0.05f);
+      EXPECT_NEAR(m.radius, 1.0f, 0.07f);
       ++in_balls;
     }
     if (std::abs(m.x) < 1.8f) {

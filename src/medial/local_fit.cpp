@@ -4,8 +4,9 @@
  */
 #include "local_fit.h"
 
-#include <Eigen/QR>
+#include <Eigen/Cholesky>
 
+#include <algorithm>
 #include <cmath>
 
 namespace segmat {
@@ -17,35 +18,40 @@ namespace {
 /// quadratic is tried first, then the linear and constant heads, as long as there are fewer
 /// points than terms + 2 or the system is rank-deficient. Robust: two reweighting passes with
 /// Cauchy weights 1 / (1 + (residual/scale)²), so that where two branches meet (the corner of
-/// a bent tube) the fit follows the branch the point is on instead of bending between both.
+/// a bent tube) the fit leans towards the branch the point is on.
+using Basis = Eigen::Matrix<double, 6, 1>; ///< up to 6 terms; the unused tail is ignored
+/// Small systems with a fixed maximum size: no heap allocation in the inner loop.
+using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+
 template <int Dim>
 Eigen::Matrix<double, Dim, 1>
-fitAndEvaluate(const std::vector<Eigen::VectorXd>& basis, const std::vector<double>& weights,
-               const std::vector<Eigen::Matrix<double, Dim, 1>>& values,
-               const Eigen::VectorXd& basis_at_point, double scale)
+fitAndEvaluate(const std::vector<Basis>& basis, int terms, const std::vector<double>& weights,
+               const std::vector<Eigen::Matrix<double, Dim, 1>>& values, const Basis& at,
+               double scale)
 {
-  const int terms = static_cast<int>(basis_at_point.size());
+  using SmallRhs = Eigen::Matrix<double, Eigen::Dynamic, Dim, 0, 6, Dim>;
   const int linear = terms == 6 ? 3 : 2;
   for (int used : {terms, linear, 1}) {
     if (used > 1 && static_cast<int>(basis.size()) < used + 2)
       continue;
     std::vector<double> robust(basis.size(), 1.0);
-    Eigen::MatrixXd coefficients;
+    SmallRhs coefficients;
     bool solved = true;
     for (int pass = 0; pass < 3 && solved; ++pass) {
-      Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(used, used);
-      Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(used, Dim);
+      SmallMatrix gram = SmallMatrix::Zero(used, used);
+      SmallRhs rhs = SmallRhs::Zero(used, Dim);
       for (std::size_t a = 0; a < basis.size(); ++a) {
-        const Eigen::VectorXd phi = basis[a].head(used);
+        const auto phi = basis[a].head(used);
         const double w = weights[a] * robust[a];
-        gram += w * phi * phi.transpose();
-        rhs += w * phi * values[a].transpose();
+        gram.noalias() += w * phi * phi.transpose();
+        rhs.noalias() += w * phi * values[a].transpose();
       }
-      const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(gram);
-      solved = qr.rank() == used;
+      const Eigen::LDLT<SmallMatrix> ldlt(gram);
+      const auto d = ldlt.vectorD();
+      solved = ldlt.info() == Eigen::Success && d.minCoeff() > 1e-10 * std::max(d.maxCoeff(), 1e-300);
       if (!solved)
         break;
-      coefficients = qr.solve(rhs);
+      coefficients = ldlt.solve(rhs);
       for (std::size_t a = 0; a < basis.size(); ++a) {
         const double residual =
             (values[a] - coefficients.transpose() * basis[a].head(used)).norm() / scale;
@@ -53,7 +59,7 @@ fitAndEvaluate(const std::vector<Eigen::VectorXd>& basis, const std::vector<doub
       }
     }
     if (solved)
-      return coefficients.transpose() * basis_at_point.head(used);
+      return coefficients.transpose() * at.head(used);
   }
   return Eigen::Matrix<double, Dim, 1>::Zero();
 }
@@ -98,6 +104,85 @@ classifyShape(const Eigen::Vector3d& ascending_eigenvalues)
 }
 
 Eigen::Vector3d
+robustLineThrough(const std::vector<Eigen::Vector3f>& points, int self, const pcl::Indices& nn,
+                  std::vector<double>* weights)
+{
+  const Eigen::Vector3d c = points[self].cast<double>();
+  std::vector<Eigen::Vector3d> offsets(nn.size());
+  std::vector<double> lengths;
+  for (std::size_t a = 0; a < nn.size(); ++a) {
+    offsets[a] = points[nn[a]].cast<double>() - c;
+    if (nn[a] != self)
+      lengths.push_back(offsets[a].norm());
+  }
+  if (weights)
+    weights->assign(nn.size(), 1.0);
+  if (lengths.size() < 3)
+    return Eigen::Vector3d::Zero();
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  const double scale = 0.1 * lengths[lengths.size() / 2];
+  if (!(scale > 0.0))
+    return Eigen::Vector3d::Zero();
+  auto inliers = [&](const Eigen::Vector3d& dir) {
+    std::size_t count = 0;
+    for (std::size_t a = 0; a < offsets.size(); ++a)
+      if (nn[a] != self)
+        count += (offsets[a] - offsets[a].dot(dir) * dir).norm() < 2.0 * scale;
+    return count;
+  };
+  // Start from the best line through the point and one neighbour (most neighbours within two
+  // scales; ties: the first), not from the PCA axis, which at a corner is the diagonal.
+  Eigen::Vector3d t = Eigen::Vector3d::Zero();
+  std::size_t best = 0;
+  for (std::size_t a = 0; a < offsets.size(); ++a) {
+    const double len = offsets[a].norm();
+    if (nn[a] == self || !(len > 0.0))
+      continue;
+    const Eigen::Vector3d dir = offsets[a] / len;
+    const std::size_t count = inliers(dir);
+    if (count > best) {
+      best = count;
+      t = dir;
+    }
+  }
+  if (best == 0)
+    return Eigen::Vector3d::Zero();
+  std::vector<double> w(nn.size(), 1.0);
+  for (int pass = 0; pass < 3; ++pass) {
+    for (std::size_t a = 0; a < offsets.size(); ++a) {
+      const double r = (offsets[a] - offsets[a].dot(t) * t).norm() / scale;
+      w[a] = 1.0 / (1.0 + r * r);
+    }
+    Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
+    for (std::size_t a = 0; a < offsets.size(); ++a)
+      moment += w[a] * offsets[a] * offsets[a].transpose();
+    t = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(moment).eigenvectors().col(2);
+  }
+  for (std::size_t a = 0; a < offsets.size(); ++a) {
+    const double r = (offsets[a] - offsets[a].dot(t) * t).norm() / scale;
+    w[a] = 1.0 / (1.0 + r * r);
+  }
+  if (weights)
+    weights->swap(w);
+  return inliers(t) * 100 >= lengths.size() * 45 ? t : Eigen::Vector3d::Zero();
+}
+
+Eigen::Vector3d
+medialDirection(const std::vector<Eigen::Vector3f>& points, int self, const pcl::Indices& nn)
+{
+  const auto pca = neighbourhoodPca(points, nn);
+  if (pca.info() != Eigen::Success || !(pca.eigenvalues()[2] > 0.0))
+    return Eigen::Vector3d::Zero();
+  const LocalShape shape = classifyShape(pca.eigenvalues());
+  if (shape == LocalShape::Curve)
+    return pca.eigenvectors().col(2);
+  const Eigen::Vector3d line =
+      shape == LocalShape::Sheet ? robustLineThrough(points, self, nn) : Eigen::Vector3d::Zero();
+  // (A PCA curve keeps its axis here: only the direction is wanted, and it is unbiased.)
+  return line.isZero() ? Eigen::Vector3d(pca.eigenvectors().col(0)) : line;
+}
+
+Eigen::Vector3d
 fitLocalStructure(const std::vector<Eigen::Vector3f>& points, int self, const pcl::Indices& nn,
                   const std::vector<float>& d2, double support, LocalShape shape,
                   double residual_scale)
@@ -112,31 +197,50 @@ fitLocalStructure(const std::vector<Eigen::Vector3f>& points, int self, const pc
   }
   mean /= weight;
   const auto pca = neighbourhoodPca(points, nn);
-  if (shape == LocalShape::Unknown)
-    shape = classifyShape(pca.eigenvalues());
   const Eigen::Matrix3d& frame = pca.eigenvectors(); // columns: smallest .. largest
   const Eigen::Vector3d own = points[self].cast<double>() - mean;
   const double scale = residual_scale;
-  std::vector<Eigen::VectorXd> basis(nn.size());
+  std::vector<Basis> basis(nn.size(), Basis::Zero());
+  std::vector<double> line_weights;
+  Eigen::Vector3d line = Eigen::Vector3d::Zero();
+  if (shape == LocalShape::Unknown) {
+    shape = classifyShape(pca.eigenvalues());
+    // A curve, or a planar L (the corner of a bent tube, which PCA calls a sheet): fit along
+    // the robust line through the point, so that the other branch does not tilt the axis.
+    if (shape != LocalShape::Blob) {
+      line = robustLineThrough(points, self, nn, &line_weights);
+      if (!line.isZero())
+        shape = LocalShape::Curve;
+    }
+  }
   if (shape == LocalShape::Curve) {
-    // across(t) in the (e0, e1) plane, t along e2.
+    // across(t) in the plane normal to the curve, t along it; about the point itself, with the
+    // robust line's weights when it came from robustLineThrough (a corner), the PCA axis else.
+    const Eigen::Vector3d t = line.isZero() ? Eigen::Vector3d(frame.col(2)) : line;
+    const Eigen::Vector3d e0 = t.unitOrthogonal(), e1 = t.cross(e0);
+    const Eigen::Vector3d origin = line.isZero() ? mean : Eigen::Vector3d(points[self].cast<double>());
     std::vector<Eigen::Vector2d> across(nn.size());
     for (std::size_t a = 0; a < nn.size(); ++a) {
-      const Eigen::Vector3d d = points[nn[a]].cast<double>() - mean;
-      const double t = d.dot(frame.col(2));
-      basis[a] = Eigen::Vector3d(1.0, t, t * t);
-      across[a] = Eigen::Vector2d(d.dot(frame.col(0)), d.dot(frame.col(1)));
+      const Eigen::Vector3d d = points[nn[a]].cast<double>() - origin;
+      const double s = d.dot(t) / support; // unit-free coordinates keep the system well posed
+      basis[a].head<3>() << 1.0, s, s * s;
+      across[a] = Eigen::Vector2d(d.dot(e0), d.dot(e1));
+      if (!line_weights.empty())
+        weights[a] *= line_weights[a];
     }
-    const double t = own.dot(frame.col(2));
-    const Eigen::Vector2d fit =
-        fitAndEvaluate<2>(basis, weights, across, Eigen::Vector3d(1.0, t, t * t), scale);
-    return mean + t * frame.col(2) + fit[0] * frame.col(0) + fit[1] * frame.col(1);
+    const double s = (points[self].cast<double>() - origin).dot(t) / support;
+    Basis at = Basis::Zero();
+    at.head<3>() << 1.0, s, s * s;
+    const Eigen::Vector2d fit = fitAndEvaluate<2>(basis, 3, weights, across, at, scale);
+    return origin + s * support * t + fit[0] * e0 + fit[1] * e1;
   }
   if (shape == LocalShape::Sheet) {
     // height(u, v) along e0 over the (e1, e2) plane.
     std::vector<Eigen::Matrix<double, 1, 1>> height(nn.size());
-    auto phi = [](double u, double v) {
-      Eigen::VectorXd b(6);
+    auto phi = [support](double u, double v) {
+      u /= support; // unit-free coordinates keep the system well posed
+      v /= support;
+      Basis b;
       b << 1.0, u, v, u * u, u * v, v * v;
       return b;
     };
@@ -146,7 +250,7 @@ fitLocalStructure(const std::vector<Eigen::Vector3f>& points, int self, const pc
       height[a](0) = d.dot(frame.col(0));
     }
     const double u = own.dot(frame.col(1)), v = own.dot(frame.col(2));
-    const double h = fitAndEvaluate<1>(basis, weights, height, phi(u, v), scale)(0);
+    const double h = fitAndEvaluate<1>(basis, 6, weights, height, phi(u, v), scale)(0);
     return mean + u * frame.col(1) + v * frame.col(2) + h * frame.col(0);
   }
   return mean; // blob

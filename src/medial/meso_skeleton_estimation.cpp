@@ -365,11 +365,7 @@ estimateMesoSkeleton(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, b
       Eigen::Vector3f normal = Eigen::Vector3f::Zero();
       if (normal_k >= 3) {
         medial_tree.nearestKSearch((*medial_xyz)[i], normal_k, nn, d2);
-        const auto pca = neighbourhoodPca(points, nn);
-        if (pca.info() == Eigen::Success && pca.eigenvalues()[2] > 0.0)
-          normal = pca.eigenvectors()
-                     .col(classifyShape(pca.eigenvalues()) == LocalShape::Curve ? 2 : 0)
-                     .cast<float>();
+        normal = medialDirection(points, i, nn).cast<float>();
       }
       out.getNormalVector3fMap() = normal;
     }

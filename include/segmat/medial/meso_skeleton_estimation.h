@@ -37,7 +37,7 @@ struct MesoSkeletonParameters
   float contact_tolerance = 0.1f;    ///< contact samples: within (1 + x)·r of the final centre
   float min_contact_spread = 1.047198f; ///< 60°: the contacts' smallest angular spread
   // Contraction (neighbour averaging across sheets and curves).
-  int contraction_iterations = 5;
+  int contraction_iterations = 3;
   float contraction_radius = 1.0f; ///< neighbourhood radius, × the point's ball radius
   // Reduction and medial normals.
   std::size_t target_size = 2000; ///< about the size of SEG-MAT's base MAT

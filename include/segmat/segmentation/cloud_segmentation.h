@@ -29,6 +29,8 @@ namespace detail {
  * \param[in] working the working cloud with oriented normals the skeleton came from
  * \param[in] medial_k neighbours of the medial point graph
  * \param[in] transfer_k neighbours of the working cloud's graph in the transfer
+ * \param[in] base_size the medial points η counts against when there are fewer (the target
+ *            size: SEG-MAT's η is a fraction of a ~2000-sphere base MAT)
  * \param[in] visibility use the ball-union visibility when merging parts
  * \param[in,out] grower the grower, parameters set (its graph and visibility are set here)
  * \param[in,out] transfer the transfer, ω set (its inputs are set here)
@@ -42,7 +44,8 @@ namespace detail {
 bool
 segmentWorkingCloud(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton,
                     const pcl::PointCloud<pcl::PointNormal>& working, int medial_k,
-                    int transfer_k, bool visibility, MatRegionGrowing& grower,
+                    int transfer_k, std::size_t base_size, bool visibility,
+                    MatRegionGrowing& grower,
                     CloudLabelTransfer& transfer, MatGraph::Ptr& graph,
                     std::vector<int>& working_labels, std::vector<int>& label_parts,
                     std::vector<pcl::PointIndices>& parts,
@@ -126,7 +129,11 @@ public:
     return grower_.getGrowingThreshold();
   }
 
-  /** \brief η, the minimal region size as a fraction of the medial points (default 0.002). */
+  /** \brief η, the minimal region size (default 0.002): a region needs int(η·N) nodes, N the
+   * number of medial points or the meso-skeleton's target size (2000), whichever is larger —
+   * SEG-MAT's η counts against a ~2000-sphere base MAT, and a skeleton of curves has fewer
+   * points.
+   */
   void
   setMinRegionFraction(double eta)
   {

@@ -17,7 +17,12 @@
 namespace segmat {
 
 template <typename PointT>
-CloudSegmentation<PointT>::CloudSegmentation() = default;
+CloudSegmentation<PointT>::CloudSegmentation()
+{
+  // Two α-expansion cycles, as the reference (GCO expansion(2)): a cycle costs one max-flow per
+  // part on the working cloud's graph, and later cycles change few points.
+  transfer_.setMaxCycles(2);
+}
 
 template <typename PointT>
 void
@@ -83,8 +88,9 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
   std::vector<int> working_labels, label_parts;
   std::vector<pcl::PointIndices> grown;
   if (!detail::segmentWorkingCloud(skeleton_, skeleton_estimation_.getWorkingCloud(), k_, k_,
-                                   visibility_, grower_, transfer_, graph_, working_labels,
-                                   label_parts, grown, stage_seconds_)) {
+                                   skeleton_estimation_.getParameters().target_size, visibility_,
+                                   grower_, transfer_, graph_, working_labels, label_parts, grown,
+                                   stage_seconds_)) {
     stage_seconds_.clear();
     deinitCompute();
     return false;
