@@ -95,8 +95,7 @@ mergeGraphAdjacentParts(const MatGraph& g, const SegmentVisibility& visibility,
 bool
 segmentWorkingCloud(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton,
                     const pcl::PointCloud<pcl::PointNormal>& working, int medial_k,
-                    int transfer_k, std::size_t base_size, bool visibility,
-                    MatRegionGrowing& grower,
+                    int transfer_k, bool visibility, MatRegionGrowing& grower,
                     CloudLabelTransfer& transfer, MatGraph::Ptr& graph,
                     std::vector<int>& working_labels, std::vector<int>& label_parts,
                     std::vector<pcl::PointIndices>& parts,
@@ -130,16 +129,8 @@ segmentWorkingCloud(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton,
   if (visibility)
     see = BallUnionVisibility(graph->centers(), graph->radii());
   grower.setSegmentVisibility(see);
-  // η is a fraction of the base MAT's size (SEG-MAT: ~2000 spheres, so N_min = 4). A
-  // meso-skeleton of mostly curves has fewer points than its target size; counting η against
-  // the target keeps N_min where SEG-MAT has it instead of letting single nodes form parts.
-  const double eta = grower.getMinRegionFraction();
-  const double nodes = double(std::max<std::size_t>(graph->numNodes(), 1));
-  grower.setMinRegionFraction(std::min(1.0, eta * std::max(double(base_size), nodes) / nodes));
   std::vector<pcl::PointIndices> grown;
-  const bool grown_ok = grower.extract(grown);
-  grower.setMinRegionFraction(eta);
-  if (!grown_ok || grown.empty()) {
+  if (!grower.extract(grown) || grown.empty()) {
     PCL_ERROR("[segmat::CloudSegmentation::segment] Region growing failed.\n");
     return false;
   }

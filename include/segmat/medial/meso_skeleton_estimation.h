@@ -100,21 +100,24 @@ estimateMesoSkeleton(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, b
  *     estimated normals a slightly tilted ball stops on a sample close to p through the 20°
  *     denoise rule, so most good balls have small separation angles); radius outside
  *     [m/x, x·m], m the median radius of the k nearest balls;
- *  4. reduction to about the target size by voxel centroids (voxel side at least
+ *  4. reduction by voxel centroids to about twice the target (voxel side at least
  *     min_spacing × the working cloud's diagonal, so the blob of balls at a sphere's centre
- *     stays a few points), then contraction passes: each centre moves towards the
- *     Gaussian-weighted mean of the centres within contraction_radius × its ball radius, only
- *     across the local structure (along the smallest PCA direction of a sheet, in the plane
- *     normal to a curve, freely in a blob: a medial set has no volume), so sheets and curves
- *     thin out without shrinking; then the centroids of the same voxels again (merges what the
- *     contraction brought together);
+ *     stays a few points); contraction passes: each centre moves onto a robust (Cauchy-weighted)
+ *     local fit of the centres within contraction_radius × its ball radius — a quadratic
+ *     across-offset along a curve (along the robust line through the point, so that at the
+ *     bend of a tube the other branch does not pull), a quadratic height field across a sheet,
+ *     the mean of a blob (a medial set has no volume) — so sheets and curves thin out without
+ *     shrinking or bending; then voxel centroids again, at a size fitted on the contracted
+ *     points, to about the target;
  *  5. radius = distance from the centre to the nearest working point; medialness test: the
  *     working points within (1 + contact_tolerance)·r must spread over at least
  *     min_contact_spread (60°) as seen from the centre — a centre left off its sheet touches
  *     one side only and has too small a ball;
  *  6. normal = smallest PCA direction of the k nearest medial points; for curve-like
- *     neighbourhoods (middle eigenvalue < 0.1 × largest), whose smallest direction is
- *     arbitrary, the curve direction instead: what C_θ should compare there.
+ *     neighbourhoods (middle eigenvalue < 0.1 × largest, or a planar L whose robust line
+ *     through the point holds 45 % of the neighbours), whose smallest direction is arbitrary,
+ *     the curve direction instead: what C_θ should compare there (a bend of a tube then shows
+ *     as one sharp change of direction, like the cones of a medial mesh).
  * Output fields: xyz = centre, normal, radius, surface_index = the nearest input point,
  * contact_index = the sample that stopped the ball (both index the input cloud).
  * Deterministic; the thread count does not change the result.

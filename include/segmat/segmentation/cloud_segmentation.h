@@ -29,8 +29,6 @@ namespace detail {
  * \param[in] working the working cloud with oriented normals the skeleton came from
  * \param[in] medial_k neighbours of the medial point graph
  * \param[in] transfer_k neighbours of the working cloud's graph in the transfer
- * \param[in] base_size the medial points η counts against when there are fewer (the target
- *            size: SEG-MAT's η is a fraction of a ~2000-sphere base MAT)
  * \param[in] visibility use the ball-union visibility when merging parts
  * \param[in,out] grower the grower, parameters set (its graph and visibility are set here)
  * \param[in,out] transfer the transfer, ω set (its inputs are set here)
@@ -44,8 +42,7 @@ namespace detail {
 bool
 segmentWorkingCloud(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton,
                     const pcl::PointCloud<pcl::PointNormal>& working, int medial_k,
-                    int transfer_k, std::size_t base_size, bool visibility,
-                    MatRegionGrowing& grower,
+                    int transfer_k, bool visibility, MatRegionGrowing& grower,
                     CloudLabelTransfer& transfer, MatGraph::Ptr& graph,
                     std::vector<int>& working_labels, std::vector<int>& label_parts,
                     std::vector<pcl::PointIndices>& parts,
@@ -75,14 +72,18 @@ labelInputPoints(const std::vector<int>& input_to_working, const std::vector<int
  *  2. "medial": shrinking balls, filters, contraction, reduction to ~2000 medial points —
  *     segmat::MesoSkeletonEstimation;
  *  3. "graph": the MAT graph of the medial points — segmat::MedialPointGraph;
- *  4. "grow_merge": the mesh path's grower, unchanged (segmat::MatRegionGrowing); with point
- *     nodes its cost is C_r + α·C_θ (no medial primitives: C_mp drops out). No structured MAT
- *     exists for a cloud, so every node is bulky (tag 0). Merging tests visibility against the
- *     union of the medial balls (segmat::BallUnionVisibility; setVisibilityFlag);
+ *  4. "grow_merge": the mesh path's grower, unchanged (segmat::MatRegionGrowing: growing,
+ *     swallowing, tiny patches); with point nodes its cost is C_r + α·C_θ (no medial
+ *     primitives: C_mp drops out). No structured MAT exists for a cloud, so every node is bulky
+ *     (tag 0). Then SEG-MAT's three merging rounds with the grower's own pieces, but with
+ *     patches adjacent when a graph edge joins them (the grower asks for a shared sphere, which
+ *     point nodes never have; see src/segmentation/cloud_segmentation.cpp). Merging tests
+ *     visibility against the union of the medial balls (segmat::BallUnionVisibility;
+ *     setVisibilityFlag);
  *  5. "transfer": α-expansion on the working cloud's k-NN graph (segmat::CloudLabelTransfer,
  *     data term = distance to each part's balls, crease-aware smoothness from the oriented
- *     normals); every input point then takes the label of the working point standing for it
- *     (its voxel's representative).
+ *     normals; two cycles, as the reference); every input point then takes the label of the
+ *     working point standing for it (its voxel's representative): "labels".
  * Parts are numbered by descending point count. A cloud that encloses no volume (a flat patch,
  * a handful of points) is one part, with a warning.
  *
@@ -129,11 +130,7 @@ public:
     return grower_.getGrowingThreshold();
   }
 
-  /** \brief η, the minimal region size (default 0.002): a region needs int(η·N) nodes, N the
-   * number of medial points or the meso-skeleton's target size (2000), whichever is larger —
-   * SEG-MAT's η counts against a ~2000-sphere base MAT, and a skeleton of curves has fewer
-   * points.
-   */
+  /** \brief η, the minimal region size as a fraction of the medial points (default 0.002). */
   void
   setMinRegionFraction(double eta)
   {

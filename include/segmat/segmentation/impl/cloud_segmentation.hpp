@@ -88,9 +88,8 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
   std::vector<int> working_labels, label_parts;
   std::vector<pcl::PointIndices> grown;
   if (!detail::segmentWorkingCloud(skeleton_, skeleton_estimation_.getWorkingCloud(), k_, k_,
-                                   skeleton_estimation_.getParameters().target_size, visibility_,
-                                   grower_, transfer_, graph_, working_labels, label_parts, grown,
-                                   stage_seconds_)) {
+                                   visibility_, grower_, transfer_, graph_, working_labels,
+                                   label_parts, grown, stage_seconds_)) {
     stage_seconds_.clear();
     deinitCompute();
     return false;
