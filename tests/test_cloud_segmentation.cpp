@@ -20,20 +20,6 @@ using namespace segmat::test;
 namespace {
 
 template <typename PointT>
-typename pcl::PointCloud<PointT>::Ptr
-convert(const SampledCloud& s)
-{
-  typename pcl::PointCloud<PointT>::Ptr cloud(new pcl::PointCloud<PointT>);
-  cloud->resize(s.size());
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    (*cloud)[i].getVector3fMap() = s.points[i];
-    if constexpr (pcl::traits::has_normal_v<PointT>)
-      (*cloud)[i].getNormalVector3fMap() = s.normals[i];
-  }
-  return cloud;
-}
-
-template <typename PointT>
 std::vector<int>
 segmentLabels(const typename pcl::PointCloud<PointT>::ConstPtr& cloud, std::size_t* parts_out,
               unsigned threads = 0)
@@ -81,7 +67,7 @@ TEST(CloudSegmentation, DumbbellIsThreeParts)
   // Estimated normals (the balls' centres then spread a little, as on real scans).
   const SampledCloud shape = dumbbellCloud(15000, 1);
   std::size_t parts = 0;
-  const std::vector<int> labels = segmentLabels<pcl::PointXYZ>(convert<pcl::PointXYZ>(shape), &parts);
+  const std::vector<int> labels = segmentLabels<pcl::PointXYZ>(shape.toCloud<pcl::PointXYZ>(), &parts);
   EXPECT_EQ(parts, 3u);
   bool distinct = false;
   EXPECT_GE(worstPurity(shape, labels, &distinct), 0.95);
@@ -94,8 +80,8 @@ TEST(CloudSegmentation, LTubeIsTwoParts)
   for (bool normals : {true, false}) {
     std::size_t parts = 0;
     const std::vector<int> labels =
-        normals ? segmentLabels<pcl::PointNormal>(convert<pcl::PointNormal>(shape), &parts)
-                : segmentLabels<pcl::PointXYZ>(convert<pcl::PointXYZ>(shape), &parts);
+        normals ? segmentLabels<pcl::PointNormal>(shape.toCloud<pcl::PointNormal>(), &parts)
+                : segmentLabels<pcl::PointXYZ>(shape.toCloud<pcl::PointXYZ>(), &parts);
     EXPECT_EQ(parts, 2u) << (normals ? "true normals" : "estimated normals");
     bool distinct = false;
     // The arms meet in a ball of radius 0.5 at the corner, ~6 % of the surface: the cut may
@@ -110,7 +96,7 @@ TEST(CloudSegmentation, SphereAndTorusAreOnePart)
   for (const SampledCloud& shape : {sphereCloud(10000, 3), torusCloud(10000, 4)}) {
     std::size_t parts = 0;
     const std::vector<int> labels =
-        segmentLabels<pcl::PointNormal>(convert<pcl::PointNormal>(shape), &parts);
+        segmentLabels<pcl::PointNormal>(shape.toCloud<pcl::PointNormal>(), &parts);
     EXPECT_EQ(parts, 1u);
     EXPECT_EQ(std::count(labels.begin(), labels.end(), 0), long(shape.size()));
   }
@@ -133,7 +119,7 @@ TEST(CloudSegmentation, TeddyAgreesWithTheMeshPath)
   const SampledCloud shape = sampleMesh(*mesh, 20000, 1);
   std::size_t parts = 0;
   const std::vector<int> labels =
-      segmentLabels<pcl::PointNormal>(convert<pcl::PointNormal>(shape), &parts);
+      segmentLabels<pcl::PointNormal>(shape.toCloud<pcl::PointNormal>(), &parts);
   EXPECT_GE(parts, 7u);
   EXPECT_LE(parts, 9u);
   const std::vector<int> truth = shape.pointLabels(face_labels);
@@ -175,12 +161,12 @@ TEST(CloudSegmentation, DegenerateCloudsFailOrGiveOnePart)
   EXPECT_EQ(parts.size(), 1u);
   EXPECT_EQ(seg.getLabels(), std::vector<int>(10, 0));
   // A flat disc: one part.
-  seg.setInputCloud(convert<pcl::PointXYZ>(discCloud(3000, 5)));
+  seg.setInputCloud(discCloud(3000, 5).toCloud<pcl::PointXYZ>());
   ASSERT_TRUE(seg.segment(parts));
   EXPECT_EQ(parts.size(), 1u);
   // A duplicated sphere: one part, every copy labelled.
   const SampledCloud sphere = sphereCloud(5000, 6);
-  auto doubled = convert<pcl::PointXYZ>(sphere);
+  auto doubled = sphere.toCloud<pcl::PointXYZ>();
   for (std::size_t i = 0; i < sphere.size(); ++i)
     doubled->push_back((*doubled)[i]);
   seg.setInputCloud(doubled);
@@ -192,7 +178,7 @@ TEST(CloudSegmentation, DegenerateCloudsFailOrGiveOnePart)
 TEST(CloudSegmentation, NanPointsAndIndicesAreLeftUnlabelled)
 {
   const SampledCloud shape = dumbbellCloud(12000, 7);
-  auto cloud = convert<pcl::PointNormal>(shape);
+  auto cloud = shape.toCloud<pcl::PointNormal>();
   (*cloud)[3].x = std::numeric_limits<float>::quiet_NaN();
   auto indices = std::make_shared<pcl::Indices>();
   for (int i = 0; i < int(cloud->size()); i += 2) // every other point
@@ -244,7 +230,7 @@ TEST(CloudSegmentation, NanPointsAndIndicesAreLeftUnlabelled)
 
 TEST(CloudSegmentation, DeterministicAcrossRunsAndThreads)
 {
-  const auto cloud = convert<pcl::PointXYZ>(lTubeCloud(6000, 8));
+  const auto cloud = lTubeCloud(6000, 8).toCloud<pcl::PointXYZ>();
   std::size_t parts = 0;
   const std::vector<int> a = segmentLabels<pcl::PointXYZ>(cloud, &parts, 1);
   EXPECT_EQ(segmentLabels<pcl::PointXYZ>(cloud, &parts, 1), a);

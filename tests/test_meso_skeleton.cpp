@@ -14,20 +14,6 @@ using namespace segmat::test;
 namespace {
 
 template <typename PointT>
-typename pcl::PointCloud<PointT>::Ptr
-convert(const SampledCloud& s)
-{
-  typename pcl::PointCloud<PointT>::Ptr cloud(new pcl::PointCloud<PointT>);
-  cloud->resize(s.size());
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    (*cloud)[i].getVector3fMap() = s.points[i];
-    if constexpr (pcl::traits::has_normal_v<PointT>)
-      (*cloud)[i].getNormalVector3fMap() = s.normals[i];
-  }
-  return cloud;
-}
-
-template <typename PointT>
 bool
 skeletonOf(const typename pcl::PointCloud<PointT>::ConstPtr& cloud,
            pcl::PointCloud<MedialPoint>& out, unsigned threads = 0)
@@ -75,9 +61,9 @@ expectDumbbell(const pcl::PointCloud<MedialPoint>& skeleton, std::size_t input_s
 
 TEST(MesoSkeleton, DumbbellWithTrueNormals)
 {
-  const SampledCloud shape = dumbbellCloud(20000, 1);
+  const SampledCloud shape = dumbbellCloud(15000, 1);
   pcl::PointCloud<MedialPoint> skeleton;
-  ASSERT_TRUE(skeletonOf<pcl::PointNormal>(convert<pcl::PointNormal>(shape), skeleton));
+  ASSERT_TRUE(skeletonOf<pcl::PointNormal>(shape.toCloud<pcl::PointNormal>(), skeleton));
   expectDumbbell(skeleton, shape.size());
   // Tube points are curve-like: their normal slot holds the curve direction, x.
   for (const MedialPoint& m : skeleton)
@@ -89,17 +75,17 @@ TEST(MesoSkeleton, DumbbellWithoutNormalsAndWithColour)
 {
   const SampledCloud shape = dumbbellCloud(20000, 2);
   pcl::PointCloud<MedialPoint> skeleton;
-  ASSERT_TRUE(skeletonOf<pcl::PointXYZ>(convert<pcl::PointXYZ>(shape), skeleton));
+  ASSERT_TRUE(skeletonOf<pcl::PointXYZ>(shape.toCloud<pcl::PointXYZ>(), skeleton));
   expectDumbbell(skeleton, shape.size());
   ASSERT_TRUE(
-      skeletonOf<pcl::PointXYZRGBNormal>(convert<pcl::PointXYZRGBNormal>(shape), skeleton));
+      skeletonOf<pcl::PointXYZRGBNormal>(shape.toCloud<pcl::PointXYZRGBNormal>(), skeleton));
   expectDumbbell(skeleton, shape.size());
 }
 
 TEST(MesoSkeleton, SphereIsOneBlobAtTheCentre)
 {
   pcl::PointCloud<MedialPoint> skeleton;
-  ASSERT_TRUE(skeletonOf<pcl::PointNormal>(convert<pcl::PointNormal>(sphereCloud(10000, 3)),
+  ASSERT_TRUE(skeletonOf<pcl::PointNormal>(sphereCloud(10000, 3).toCloud<pcl::PointNormal>(),
                                            skeleton));
   // Every ball lands within the sampling error of the centre; the minimum spacing
   // (0.005 × diagonal ≈ 0.017) leaves at most the 8 cells around it.
@@ -115,7 +101,7 @@ TEST(MesoSkeleton, LargeCloudIsResampledAndIndicesPointIntoTheInput)
 {
   const SampledCloud shape = torusCloud(60000, 4);
   MesoSkeletonEstimation<pcl::PointNormal> estimation;
-  estimation.setInputCloud(convert<pcl::PointNormal>(shape));
+  estimation.setInputCloud(shape.toCloud<pcl::PointNormal>());
   estimation.setWorkingSize(8000);
   estimation.setTargetSize(500);
   pcl::PointCloud<MedialPoint> skeleton;
@@ -134,7 +120,7 @@ TEST(MesoSkeleton, LargeCloudIsResampledAndIndicesPointIntoTheInput)
 
 TEST(MesoSkeleton, DeterministicAcrossRunsAndThreads)
 {
-  const auto cloud = convert<pcl::PointXYZ>(lTubeCloud(15000, 5));
+  const auto cloud = lTubeCloud(8000, 5).toCloud<pcl::PointXYZ>();
   pcl::PointCloud<MedialPoint> a, b, c;
   ASSERT_TRUE(skeletonOf<pcl::PointXYZ>(cloud, a, 1));
   ASSERT_TRUE(skeletonOf<pcl::PointXYZ>(cloud, b, 1));
@@ -168,16 +154,16 @@ TEST(MesoSkeleton, DegenerateCloudsFailWithoutCrashing)
   EXPECT_FALSE(estimation.compute(skeleton)); // 5 points: no interior ball
   EXPECT_TRUE(skeleton.empty());
   // A flat disc encloses nothing.
-  estimation.setInputCloud(convert<pcl::PointXYZ>(discCloud(3000, 6)));
+  estimation.setInputCloud(discCloud(3000, 6).toCloud<pcl::PointXYZ>());
   EXPECT_FALSE(estimation.compute(skeleton));
   EXPECT_TRUE(skeleton.empty());
   // Duplicated points: the same skeleton as without the copies.
   const SampledCloud sphere = sphereCloud(4000, 7);
-  auto doubled = convert<pcl::PointXYZ>(sphere);
+  auto doubled = sphere.toCloud<pcl::PointXYZ>();
   for (std::size_t i = 0; i < sphere.size(); ++i)
     doubled->push_back((*doubled)[i]);
   pcl::PointCloud<MedialPoint> once, twice;
-  ASSERT_TRUE(skeletonOf<pcl::PointXYZ>(convert<pcl::PointXYZ>(sphere), once));
+  ASSERT_TRUE(skeletonOf<pcl::PointXYZ>(sphere.toCloud<pcl::PointXYZ>(), once));
   ASSERT_TRUE(skeletonOf<pcl::PointXYZ>(doubled, twice));
   ASSERT_EQ(once.size(), twice.size());
   for (std::size_t i = 0; i < once.size(); ++i)
@@ -188,7 +174,7 @@ TEST(MesoSkeleton, IndicesSelectTheInputAndSettersRefuseBadValues)
 {
   // The input is two dumbbells; indices select the first only.
   const SampledCloud shape = dumbbellCloud(10000, 8);
-  auto cloud = convert<pcl::PointNormal>(shape);
+  auto cloud = shape.toCloud<pcl::PointNormal>();
   auto indices = std::make_shared<pcl::Indices>();
   for (std::size_t i = 0; i < shape.size(); ++i) {
     indices->push_back(int(cloud->size()));

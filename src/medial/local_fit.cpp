@@ -66,6 +66,15 @@ fitAndEvaluate(const std::vector<Basis>& basis, int terms, const std::vector<dou
 
 } // namespace
 
+double
+angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+  const double la = a.norm(), lb = b.norm();
+  if (la == 0.0 || lb == 0.0)
+    return 0.0;
+  return std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0));
+}
+
 pcl::PointCloud<pcl::PointXYZ>::Ptr
 toXYZ(const std::vector<Eigen::Vector3f>& points)
 {

@@ -18,6 +18,10 @@
 namespace segmat {
 namespace detail {
 
+/** \brief Angle between two vectors in radians (0 when either is zero), argument clamped. */
+double
+angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+
 /** \brief The points as a PCL cloud, for PCL's precompiled kd-tree. */
 pcl::PointCloud<pcl::PointXYZ>::Ptr
 toXYZ(const std::vector<Eigen::Vector3f>& points);

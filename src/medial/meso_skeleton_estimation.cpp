@@ -42,16 +42,6 @@ workingDiagonal(const pcl::PointCloud<pcl::PointNormal>& cloud)
   return (hi - lo).cast<double>().norm();
 }
 
-/// Angle between two vectors in radians (0 when either is zero), argument clamped.
-double
-angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
-{
-  const double la = a.norm(), lb = b.norm();
-  if (la == 0.0 || lb == 0.0)
-    return 0.0;
-  return std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0));
-}
-
 /// Radius-outlier filter: keeps i when r_i / median(r of its k nearest) is in [1/ratio, ratio].
 std::vector<int>
 radiusInliers(const std::vector<Eigen::Vector3f>& centres, const std::vector<float>& radii,

@@ -4,6 +4,7 @@
  */
 #include <segmat/medial/shrinking_ball_estimation.h>
 
+#include "local_fit.h"
 #include "thread_count.h"
 
 #include <pcl/console/print.h>
@@ -17,16 +18,6 @@ namespace segmat {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-/// Angle between two vectors in radians (0 when either is zero), argument clamped.
-double
-angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
-{
-  const double la = a.norm(), lb = b.norm();
-  if (la == 0.0 || lb == 0.0)
-    return 0.0;
-  return std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0));
-}
 
 struct Ball
 {
@@ -165,7 +156,7 @@ ShrinkingBallEstimation::compute(pcl::PointCloud<MedialPoint>& balls)
         break;
       const double r_new = d.squaredNorm() / (2.0 * dn);
       const Eigen::Vector3d c_new = p - r_new * normal;
-      const double separation = angleBetween(p - c_new, x - c_new);
+      const double separation = detail::angleBetween(p - c_new, x - c_new);
       if (ball.contact < 0 && separation < planar)
         return Ball{}; // planar or noisy spot: no interior ball
       if (ball.contact >= 0 && separation < preserve)

@@ -64,24 +64,13 @@ push(SampledCloud& cloud, const Eigen::Vector3d& p, const Eigen::Vector3d& n, in
 pcl::PointCloud<pcl::PointNormal>::Ptr
 SampledCloud::toPointNormal() const
 {
-  pcl::PointCloud<pcl::PointNormal>::Ptr cloud(new pcl::PointCloud<pcl::PointNormal>);
-  cloud->resize(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    (*cloud)[i].getVector3fMap() = points[i];
-    (*cloud)[i].getNormalVector3fMap() = normals[i];
-    (*cloud)[i].curvature = 0.0f;
-  }
-  return cloud;
+  return toCloud<pcl::PointNormal>();
 }
 
 pcl::PointCloud<pcl::PointXYZ>::Ptr
 SampledCloud::toPointXYZ() const
 {
-  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
-  cloud->resize(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    (*cloud)[i].getVector3fMap() = points[i];
-  return cloud;
+  return toCloud<pcl::PointXYZ>();
 }
 
 std::vector<int>

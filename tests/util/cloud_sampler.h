@@ -10,6 +10,7 @@
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
+#include <pcl/type_traits.h>
 
 #include <Eigen/Core>
 
@@ -36,6 +37,21 @@ struct SampledCloud
   /** \brief Points only. */
   pcl::PointCloud<pcl::PointXYZ>::Ptr
   toPointXYZ() const;
+
+  /** \brief As any PCL point type; the normals are copied when it has normal fields. */
+  template <typename PointT>
+  typename pcl::PointCloud<PointT>::Ptr
+  toCloud() const
+  {
+    typename pcl::PointCloud<PointT>::Ptr cloud(new pcl::PointCloud<PointT>);
+    cloud->resize(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      (*cloud)[i].getVector3fMap() = points[i];
+      if constexpr (pcl::traits::has_normal_v<PointT>)
+        (*cloud)[i].getNormalVector3fMap() = normals[i];
+    }
+    return cloud;
+  }
 
   /** \brief Map per-source labels (e.g. a face labelling) to per-point labels. */
   std::vector<int>

@@ -336,6 +336,11 @@ protected:
   using pcl::PCLBase<PointT>::deinitCompute;
 
 private:
+  /** \brief Copies the input's xyz and the labels (and Glasbey colours for coloured types). */
+  template <typename LabeledT>
+  void
+  fillLabeledCloud(pcl::PointCloud<LabeledT>& cloud) const;
+
   MesoSkeletonEstimation<PointT> skeleton_estimation_;
   MatRegionGrowing grower_;
   CloudLabelTransfer transfer_;

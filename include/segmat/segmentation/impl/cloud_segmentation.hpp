@@ -9,6 +9,7 @@
 #include <pcl/common/colors.h>
 #include <pcl/common/point_tests.h>
 #include <pcl/console/print.h>
+#include <pcl/type_traits.h>
 
 #include <chrono>
 #include <cstdint>
@@ -111,17 +112,27 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
 }
 
 template <typename PointT>
+template <typename LabeledT>
 void
-CloudSegmentation<PointT>::getLabeledCloud(pcl::PointCloud<pcl::PointXYZL>& cloud) const
+CloudSegmentation<PointT>::fillLabeledCloud(pcl::PointCloud<LabeledT>& cloud) const
 {
   cloud.clear();
   if (!input_ || labels_.size() != input_->size())
     return;
   cloud.resize(input_->size());
   for (std::size_t i = 0; i < input_->size(); ++i) {
-    cloud[i].getVector3fMap() = (*input_)[i].getVector3fMap();
-    cloud[i].label = labels_[i] >= 0 ? std::uint32_t(labels_[i])
-                                     : std::numeric_limits<std::uint32_t>::max();
+    LabeledT& out = cloud[i];
+    out.getVector3fMap() = (*input_)[i].getVector3fMap();
+    out.label = labels_[i] >= 0 ? std::uint32_t(labels_[i])
+                                : std::numeric_limits<std::uint32_t>::max();
+    if constexpr (pcl::traits::has_color_v<LabeledT>) {
+      const pcl::RGB colour =
+          labels_[i] >= 0 ? pcl::GlasbeyLUT::at(std::size_t(labels_[i]) % pcl::GlasbeyLUT::size())
+                          : pcl::RGB(0, 0, 0);
+      out.r = colour.r;
+      out.g = colour.g;
+      out.b = colour.b;
+    }
   }
   cloud.width = input_->width;
   cloud.height = input_->height;
@@ -130,29 +141,16 @@ CloudSegmentation<PointT>::getLabeledCloud(pcl::PointCloud<pcl::PointXYZL>& clou
 
 template <typename PointT>
 void
+CloudSegmentation<PointT>::getLabeledCloud(pcl::PointCloud<pcl::PointXYZL>& cloud) const
+{
+  fillLabeledCloud(cloud);
+}
+
+template <typename PointT>
+void
 CloudSegmentation<PointT>::getLabeledCloud(pcl::PointCloud<pcl::PointXYZRGBL>& cloud) const
 {
-  cloud.clear();
-  if (!input_ || labels_.size() != input_->size())
-    return;
-  cloud.resize(input_->size());
-  for (std::size_t i = 0; i < input_->size(); ++i) {
-    cloud[i].getVector3fMap() = (*input_)[i].getVector3fMap();
-    if (labels_[i] >= 0) {
-      const pcl::RGB colour = pcl::GlasbeyLUT::at(std::size_t(labels_[i]) % pcl::GlasbeyLUT::size());
-      cloud[i].r = colour.r;
-      cloud[i].g = colour.g;
-      cloud[i].b = colour.b;
-      cloud[i].label = std::uint32_t(labels_[i]);
-    }
-    else {
-      cloud[i].r = cloud[i].g = cloud[i].b = 0;
-      cloud[i].label = std::numeric_limits<std::uint32_t>::max();
-    }
-  }
-  cloud.width = input_->width;
-  cloud.height = input_->height;
-  cloud.is_dense = input_->is_dense;
+  fillLabeledCloud(cloud);
 }
 
 } // namespace segmat
