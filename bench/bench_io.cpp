@@ -1,9 +1,10 @@
-// Reading speed of the text readers: median wall time of repeated loads.
-//   bench_io [FILE.off|FILE.ma ...]   (default: the bundled teddy.off and teddy_mat.ma)
+// Reading speed of the readers: median wall time of 21 loads per file.
+//   bench_io [FILE.{off,obj,ply,stl,ma} ...]   (default, run from the repository root: the bundled
+//   data/teddy/teddy.off and data/teddy/teddy_mat.ma)
 #include <segmat/common/error.h>
 #include <segmat/io/atomic_file.h>
 #include <segmat/io/ma.h>
-#include <segmat/io/off.h>
+#include <segmat/io/mesh.h>
 
 #include <algorithm>
 #include <chrono>
@@ -43,15 +44,12 @@ main(int argc, char** argv)
       const std::string ext = segmat::io::extensionOf(path);
       std::size_t size = 0;
       double ms = 0.0;
-      if (ext == "off") {
-        ms = medianMilliseconds([&] { size = segmat::io::loadOff(path).numFaces(); }, 21);
-        std::printf("%s: %zu faces, median load %.2f ms\n", path.c_str(), size, ms);
-      } else if (ext == "ma") {
+      if (ext == "ma") {
         ms = medianMilliseconds([&] { size = segmat::io::loadMa(path).numVertices(); }, 21);
         std::printf("%s: %zu spheres, median load %.2f ms\n", path.c_str(), size, ms);
       } else {
-        std::fprintf(stderr, "%s: only .off and .ma are timed\n", path.c_str());
-        return 2;
+        ms = medianMilliseconds([&] { size = segmat::io::loadMesh(path).numFaces(); }, 21);
+        std::printf("%s: %zu faces, median load %.2f ms\n", path.c_str(), size, ms);
       }
     }
   } catch (const segmat::Error& e) {

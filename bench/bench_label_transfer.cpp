@@ -10,6 +10,8 @@
  *   build/bin/bench_label_transfer [-r REPETITIONS] [-n POINTS[,POINTS...]]
  * Run from the repository root.
  */
+#include "bench_common.h"
+
 #include <segmat/geometry/aabb_tree.h>
 #include <segmat/io/ma.h>
 #include <segmat/io/mesh.h>
@@ -28,8 +30,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 namespace {
 
@@ -51,9 +51,7 @@ timeIt(int repetitions, const std::function<void()>& work)
     cpu.push_back(static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC);
     wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
-  std::sort(wall.begin(), wall.end());
-  std::sort(cpu.begin(), cpu.end());
-  return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
+  return {segmat::bench::median(wall), segmat::bench::median(cpu)};
 }
 
 void
@@ -67,11 +65,7 @@ report(const char* what, const Timing& t)
 int
 main(int argc, char** argv)
 {
-  // One thread unless the caller says otherwise; OpenMP reads the variable at load time.
-  if (!std::getenv("OMP_NUM_THREADS")) {
-    setenv("OMP_NUM_THREADS", "1", 1);
-    execv("/proc/self/exe", argv);
-  }
+  segmat::bench::restartSingleThreaded(argv);
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
   int repetitions = 5;
   std::vector<long> sizes{100000, 1000000};

@@ -8,6 +8,8 @@
  *   build/bin/bench_mesh_segmentation [MESH BASE.ma STRUCTURED.ma] [-r REPETITIONS]
  * Run from the repository root (the default paths are data/teddy/...).
  */
+#include "bench_common.h"
+
 #include <segmat/io/ma.h>
 #include <segmat/io/mesh.h>
 #include <segmat/segmentation/mesh_segmentation.h>
@@ -18,34 +20,17 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <map>
 #include <ctime>
+#include <map>
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
-namespace {
-
-double
-median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
-}
-
-} // namespace
+using segmat::bench::median;
 
 int
 main(int argc, char** argv)
 {
-  // One thread unless the caller says otherwise. OpenMP reads the variable when the program is
-  // loaded, so set it and start again.
-  if (!std::getenv("OMP_NUM_THREADS")) {
-    setenv("OMP_NUM_THREADS", "1", 1);
-    execv("/proc/self/exe", argv);
-  }
+  segmat::bench::restartSingleThreaded(argv);
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
   std::string mesh_path = "data/teddy/teddy.off", base_path = "data/teddy/teddy_mat.ma",
               structured_path = "data/teddy/teddy_smat.ma";

@@ -105,17 +105,26 @@ main(int argc, char** argv)
     return 2;
   }
 
+  // Exit status as segmat_eval: 2 for bad usage or a missing or malformed input, 1 otherwise.
+  auto start = std::chrono::steady_clock::now();
+  segmat::TriangleMesh::Ptr mesh;
+  segmat::MedialMesh::Ptr base, structured;
   try {
-    auto start = std::chrono::steady_clock::now();
-    auto mesh = std::make_shared<segmat::TriangleMesh>(segmat::io::loadMesh(mesh_path));
-    auto base = std::make_shared<segmat::MedialMesh>(segmat::io::loadMa(base_path));
-    auto structured = std::make_shared<segmat::MedialMesh>(segmat::io::loadMa(structured_path));
-    const double load_seconds = secondsSince(start);
+    mesh = std::make_shared<segmat::TriangleMesh>(segmat::io::loadMesh(mesh_path));
+    base = std::make_shared<segmat::MedialMesh>(segmat::io::loadMa(base_path));
+    structured = std::make_shared<segmat::MedialMesh>(segmat::io::loadMa(structured_path));
     if (mesh->empty())
       throw segmat::Error(mesh_path, 0, "the mesh has no faces");
     if (base->empty())
       throw segmat::Error(base_path, 0, "the base medial mesh has no spheres");
+  }
+  catch (const std::exception& e) {
+    std::cerr << "segmat_mesh: " << e.what() << "\n";
+    return 2;
+  }
+  const double load_seconds = secondsSince(start);
 
+  try {
     segmentation.setInputMesh(mesh);
     segmentation.setBaseMat(base);
     segmentation.setStructuredMat(structured);

@@ -150,6 +150,14 @@ TEST(FaceOrientation, RepairsFlippedFacesAndInvertedMeshes)
   for (auto& t : mesh.faces)
     std::swap(t[1], t[2]);
   EXPECT_TRUE(outward(mesh, computeOutwardFaceSigns(mesh, mesh.faceAdjacency())));
+  // A NaN vertex does not spoil the orientation of the finite faces of its component.
+  mesh.vertices[0] = Eigen::Vector3d::Constant(std::nan(""));
+  signs = computeOutwardFaceSigns(mesh, mesh.faceAdjacency());
+  for (std::size_t f = 0; f < mesh.numFaces(); ++f) {
+    const Eigen::Vector3d n = signs[f] * mesh.faceNormal(static_cast<int>(f));
+    if (n.allFinite() && mesh.faceCentroid(static_cast<int>(f)).allFinite())
+      EXPECT_GT(n.dot(mesh.faceCentroid(static_cast<int>(f)) - centre), 0.0) << f;
+  }
 }
 
 TEST(FaceOrientation, ComponentsDegenerateAndEmpty)
@@ -349,7 +357,8 @@ TEST(MeshLabelTransfer, OnePartAndBadInput)
 TEST(MeshLabelTransfer, OpenNonManifoldAndDegenerateMeshes)
 {
   // The bar without its +x cap (open), plus a fin sharing an edge with two bar faces
-  // (non-manifold) and a zero-area face: labels stay finite and split by side.
+  // (non-manifold), a zero-area face and a face with a NaN corner: labels stay finite and split
+  // by side.
   BarScene s = bar();
   auto mesh = std::make_shared<TriangleMesh>(*s.mesh);
   std::vector<Eigen::Vector3i> kept;
@@ -361,6 +370,8 @@ TEST(MeshLabelTransfer, OpenNonManifoldAndDegenerateMeshes)
   mesh->vertices.push_back(mesh->vertices[a] + Eigen::Vector3d(0, 0, 0.3));
   mesh->faces.emplace_back(a, b, static_cast<int>(mesh->vertices.size()) - 1);
   mesh->faces.emplace_back(a, a, b);
+  mesh->vertices.push_back(Eigen::Vector3d::Constant(std::nan("")));
+  mesh->faces.emplace_back(a, b, static_cast<int>(mesh->vertices.size()) - 1); // NaN corner
   MeshLabelTransfer transfer;
   transfer.setInputMesh(mesh);
   transfer.setInputGraph(s.graph);
@@ -369,7 +380,7 @@ TEST(MeshLabelTransfer, OpenNonManifoldAndDegenerateMeshes)
   ASSERT_TRUE(transfer.transfer(labels));
   ASSERT_EQ(labels.size(), mesh->numFaces());
   EXPECT_TRUE(std::isfinite(transfer.getEnergy()));
-  for (std::size_t f = 0; f + 2 < mesh->numFaces(); ++f)
+  for (std::size_t f = 0; f + 3 < mesh->numFaces(); ++f)
     EXPECT_EQ(labels[f], mesh->faceCentroid(static_cast<int>(f)).x() > 0.0 ? 1 : 0) << f;
 }
 

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <tuple>
 
 namespace segmat {
@@ -86,16 +87,25 @@ computeOutwardFaceSigns(const TriangleMesh& mesh, const std::vector<FaceAdjacenc
     }
     // Outward: non-negative signed volume about the component's centroid (translation-free for
     // closed components, and a sensible choice for open ones).
+    // Faces with a non-finite corner are left out of both sums.
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (int f : queue)
-      centre += mesh.faceCentroid(f);
-    centre /= static_cast<double>(queue.size());
+    int finite = 0;
+    for (int f : queue) {
+      const Eigen::Vector3d c = mesh.faceCentroid(f);
+      if (c.allFinite()) {
+        centre += c;
+        ++finite;
+      }
+    }
+    centre /= std::max(finite, 1);
     double volume = 0.0;
     for (int f : queue) {
       const Eigen::Vector3i& t = mesh.faces[f];
       const Eigen::Vector3d a = mesh.vertices[t[0]] - centre, b = mesh.vertices[t[1]] - centre,
                             c = mesh.vertices[t[2]] - centre;
-      volume += sign[f] * a.dot(b.cross(c));
+      const double v = a.dot(b.cross(c));
+      if (std::isfinite(v))
+        volume += sign[f] * v;
     }
     if (volume < 0.0)
       for (int f : queue)

@@ -36,6 +36,8 @@ computePartDistanceCosts(const std::vector<Eigen::Vector3d>& positions, const Ma
   if (!(diagonal > 0.0))
     diagonal = 1.0; // one sphere, or all centres equal: distances are then in model units
   const double scale = kTransferEnergyScale / diagonal;
+  std::vector<SphereTree> trees;
+  trees.reserve(num_parts);
   for (int l = 0; l < num_parts; ++l) {
     std::vector<int> spheres;
     for (int node : parts[l]) {
@@ -43,22 +45,24 @@ computePartDistanceCosts(const std::vector<Eigen::Vector3d>& positions, const Ma
       for (int k = 0; k < m.size(); ++k)
         spheres.push_back(m.v[k]);
     }
-    const SphereTree tree(graph.centers(), graph.radii(), spheres);
-    if (tree.empty()) {
-      costs.col(l).setConstant(kNoPartCost);
-      continue;
-    }
-    // Consecutive elements are usually close, so the previous answer is a good first bound.
-    // The result does not depend on the hint (the minimum is exact), hence on the threads.
-    int hint = -1;
-#pragma omp parallel for schedule(static) firstprivate(hint)
-    for (long i = 0; i < n; ++i) {
-      if (!positions[i].allFinite()) {
+    trees.emplace_back(graph.centers(), graph.radii(), spheres);
+  }
+  // One parallel region for all parts (a fork/join per part costs more than it saves on busy
+  // machines). Consecutive elements are usually close, so each part's previous answer is a good
+  // first bound; the result does not depend on it (the minimum is exact), hence not on threads.
+  std::vector<int> hints(num_parts, -1);
+#pragma omp parallel for schedule(static) firstprivate(hints)
+  for (long i = 0; i < n; ++i) {
+    const bool finite = positions[i].allFinite();
+    for (int l = 0; l < num_parts; ++l) {
+      if (trees[l].empty())
+        costs(i, l) = kNoPartCost;
+      else if (!finite)
         costs(i, l) = 0.0; // no preference: the neighbours decide
-        continue;
+      else {
+        const double d = trees[l].signedDistance(positions[i], 0.0, &hints[l]);
+        costs(i, l) = d > 0.0 ? std::floor(d * scale) : 0.0;
       }
-      const double d = tree.signedDistance(positions[i], 0.0, &hint);
-      costs(i, l) = d > 0.0 ? std::floor(d * scale) : 0.0;
     }
   }
   return costs;

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -15,18 +16,32 @@
 namespace segmat {
 namespace test {
 
-std::string
-scratchDir()
+namespace {
+// The per-process directory, removed with everything in it when the test program exits.
+struct ScratchDirectory
 {
-  static const std::string dir = [] {
+  std::string path;
+  ScratchDirectory()
+  {
     std::string base = ::testing::TempDir();
     if (base.empty() || base.back() != '/')
       base += '/';
-    const std::string d = base + "segmat_test_" + std::to_string(::getpid()) + "/";
-    ::mkdir(d.c_str(), 0700);
-    return d;
-  }();
-  return dir;
+    path = base + "segmat_test_" + std::to_string(::getpid()) + "/";
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchDirectory()
+  {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+} // namespace
+
+std::string
+scratchDir()
+{
+  static const ScratchDirectory dir;
+  return dir.path;
 }
 
 std::string

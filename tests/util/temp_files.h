@@ -10,7 +10,8 @@
 namespace segmat {
 namespace test {
 
-/** \brief Directory for this test process's scratch files (created on first use, ends in '/'). */
+/** \brief Directory for this test process's scratch files (created on first use, removed with its
+ * content when the process exits; ends in '/'). */
 std::string
 scratchDir();
 

@@ -17,7 +17,8 @@ namespace segmat {
  * (reference-facts §3.10). Faces are propagated breadth-first over manifold edges (edges with
  * exactly two faces), in face order: a neighbour whose shared edge runs the same way as in the
  * current face is flipped. Each connected component is then turned so that its signed volume,
- * taken about the component's centroid, is >= 0. Non-manifold edges do not propagate (their
+ * taken about the component's centroid, is >= 0 (faces with a non-finite corner left out).
+ * Non-manifold edges do not propagate (their
  * sheets are oriented on their own); degenerate faces keep +1. A non-orientable component
  * (Möbius-like) keeps the first assignment reached.
  * \param[in] mesh the mesh

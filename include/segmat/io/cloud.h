@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <segmat/common/error.h> // readers and writers throw segmat::Error
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <segmat/common/error.h> // readers and writers throw segmat::Error
 #include <segmat/geometry/triangle_mesh.h>
 
 #include <pcl/point_cloud.h>

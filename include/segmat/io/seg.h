@@ -4,6 +4,8 @@
  */
 #pragma once
 
+#include <segmat/common/error.h> // readers and writers throw segmat::Error
+
 #include <string>
 #include <vector>
 

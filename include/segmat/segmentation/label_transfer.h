@@ -28,8 +28,8 @@ constexpr double kTransferEnergyScale = 1e5;
  * D(i, l) = ⌊ max(0, min_{s ∈ part l} (|x_i − c_s| − r_s)) / B · 1e5 ⌋, where s runs over the
  * spheres of part l's (coarse) MAT-graph nodes and B is the diagonal of the bounding box of all
  * sphere centres (graph.centerBoundingBoxDiagonal(); 1 when that is 0). A part without any
- * sphere costs 1e9 everywhere, so it never wins; a non-finite position costs 0 for every part
- * (its neighbours decide). Exact, with one SphereTree per part.
+ * sphere costs 1e9 everywhere, so it never wins; a non-finite position costs 0 for every other
+ * part (its neighbours decide). Exact, with one SphereTree per part.
  * \param[in] positions query points (face centroids, cloud points)
  * \param[in] graph the MAT graph whose node indices \a parts holds (must be valid indices)
  * \param[in] parts per part, its MAT-graph nodes
