@@ -1,0 +1,97 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ *
+ * Cloud-path speed: CloudSegmentation on an area-uniform sample of a mesh (default: the bundled
+ * teddy), single thread unless --threads is given. Prints the CPU and wall seconds of
+ * segment() (sampling excluded) and the wall seconds of every stage; on a shared machine the CPU
+ * time of a single-thread run is the figure to quote. Peak memory: run it under /usr/bin/time -v. Run from the
+ * repository root (the default mesh is data/teddy/teddy.off).
+ *
+ * Usage: bench_cloud [MESH.off] [--points N] [--estimate-normals] [--threads N] [--repeat R]
+ *                    [--working N] [--balls N] [--contraction N]   (meso-skeleton parameters)
+ */
+// The test sampler is compiled in (bench programs link only the library).
+#include "../tests/util/cloud_sampler.cpp"
+
+#include <segmat/common/error.h>
+#include <segmat/io/off.h>
+#include <segmat/segmentation/cloud_segmentation.h>
+
+#include <pcl/console/print.h>
+
+#include <chrono>
+#include <ctime>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+int
+main(int argc, char** argv)
+{
+  std::string mesh_path = "data/teddy/teddy.off"; // run from the repository root
+  std::size_t points = 100000;
+  bool estimate = false;
+  unsigned threads = 1;
+  int repeat = 1;
+  segmat::MesoSkeletonParameters params;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--points" && i + 1 < argc)
+      points = std::stoul(argv[++i]);
+    else if (arg == "--threads" && i + 1 < argc)
+      threads = static_cast<unsigned>(std::stoul(argv[++i]));
+    else if (arg == "--repeat" && i + 1 < argc)
+      repeat = std::stoi(argv[++i]);
+    else if (arg == "--estimate-normals")
+      estimate = true;
+    else if (arg == "--working" && i + 1 < argc)
+      params.working_size = std::stoul(argv[++i]);
+    else if (arg == "--balls" && i + 1 < argc)
+      params.ball_count = std::stoul(argv[++i]);
+    else if (arg == "--contraction" && i + 1 < argc)
+      params.contraction_iterations = std::stoi(argv[++i]);
+    else if (!arg.empty() && arg[0] != '-')
+      mesh_path = arg;
+    else {
+      std::cerr << "usage: bench_cloud [MESH.off] [--points N] [--estimate-normals] "
+                   "[--threads N] [--repeat R] [--working N] [--balls N] [--contraction N]\n";
+      return 2;
+    }
+  }
+  pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
+  segmat::TriangleMesh mesh;
+  try {
+    mesh = segmat::io::loadOff(mesh_path);
+  }
+  catch (const segmat::Error& e) {
+    std::cerr << "bench_cloud: " << e.what() << "\n";
+    return 1;
+  }
+  const auto cloud = segmat::test::sampleMesh(mesh, points, 1).toPointNormal();
+  for (int r = 0; r < repeat; ++r) {
+    segmat::CloudSegmentation<pcl::PointNormal> seg;
+    seg.setInputCloud(cloud);
+    seg.setMesoSkeletonParameters(params);
+    seg.setUseInputNormalsFlag(!estimate);
+    seg.setNumberOfThreads(threads);
+    std::vector<pcl::PointIndices> parts;
+    const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpu_start = std::clock();
+    const bool ok = seg.segment(parts);
+    const double cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+    const double total =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // With one thread the CPU time is what the wall time would be on an idle machine.
+    std::printf("%s: %zu points, %s normals, %u thread(s): %s, %zu parts, %.3f s CPU, %.3f s "
+                "wall (wall per stage:",
+                mesh_path.c_str(), cloud->size(), estimate ? "estimated" : "input", threads,
+                ok ? "ok" : "FAILED", parts.size(), cpu, total);
+    for (const auto& stage : seg.getStageSeconds())
+      std::printf(" %s %.3f", stage.first.c_str(), stage.second);
+    const auto& stats = seg.getMesoSkeletonStatistics();
+    std::printf(" ) working %zu, balls %zu (%.3f s), medial points %zu\n", stats.working_points,
+                stats.balls, stats.seconds_balls, stats.medial_points);
+  }
+  return 0;
+}

@@ -1,0 +1,220 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ *
+ * Cloud-path quality on PSB meshes: each mesh is sampled area-uniformly (20k points by default,
+ * fixed seed), every point takes the label its source face has in each human segmentation, and
+ * CloudSegmentation's point labels are scored with the point Rand index (reported as 1 − RI,
+ * over point pairs, textbook divisor n(n−1)/2), averaged over humans, then over models. Three
+ * conditions: (a) true normals (face normals), (b) no normals (estimated and oriented),
+ * (c) Gaussian noise of sigma = 0.5 % of the bounding-box diagonal, no normals.
+ *
+ * Usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6,...] [--json]
+ *   PSB_DIR defaults to ../shared/data/psb-dev (off/N.off, seg/Benchmark/N/N_k.seg).
+ */
+// The test sampler is compiled in (bench programs link only the library).
+#include "../tests/util/cloud_sampler.cpp"
+
+#include <segmat/common/error.h>
+#include <segmat/io/off.h>
+#include <segmat/io/seg.h>
+#include <segmat/segmentation/cloud_segmentation.h>
+
+#include <pcl/console/print.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using segmat::test::SampledCloud;
+
+/// 1 − Rand index of two labelings of the same points (any integer labels).
+double
+randIndexError(const std::vector<int>& a, const std::vector<int>& b)
+{
+  const std::size_t n = a.size();
+  if (n < 2)
+    return 0.0;
+  std::map<int, double> ca, cb;
+  std::map<std::pair<int, int>, double> cab;
+  for (std::size_t i = 0; i < n; ++i) {
+    ca[a[i]] += 1;
+    cb[b[i]] += 1;
+    cab[{a[i], b[i]}] += 1;
+  }
+  auto pairs = [](double k) { return k * (k - 1) / 2; };
+  double sa = 0, sb = 0, sab = 0;
+  for (const auto& kv : ca)
+    sa += pairs(kv.second);
+  for (const auto& kv : cb)
+    sb += pairs(kv.second);
+  for (const auto& kv : cab)
+    sab += pairs(kv.second);
+  return (sa + sb - 2 * sab) / pairs(double(n));
+}
+
+const char* kCategories[] = {"Human", "Cup",      "Glasses", "Airplane", "Ant",
+                             "Chair", "Octopus",  "Table",   "Teddy",    "Hand",
+                             "Plier", "Fish",     "Bird",    "Spring",   "Armadillo",
+                             "Bust",  "Mech",     "Bearing", "Vase",     "FourLeg"};
+
+struct Result
+{
+  double ri = 0;
+  int parts = 0;
+  double seconds = 0;
+};
+
+Result
+run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int>>& truths)
+{
+  segmat::CloudSegmentation<pcl::PointNormal> seg;
+  seg.setInputCloud(sampled.toPointNormal());
+  seg.setUseInputNormalsFlag(normals);
+  seg.setNumberOfThreads(1);
+  std::vector<pcl::PointIndices> parts;
+  const auto start = std::chrono::steady_clock::now();
+  const bool ok = seg.segment(parts);
+  Result r;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.parts = ok ? int(parts.size()) : 0;
+  std::vector<int> labels = ok ? seg.getLabels() : std::vector<int>(sampled.size(), 0);
+  for (const auto& truth : truths)
+    r.ri += randIndexError(labels, truth);
+  r.ri /= double(truths.size());
+  return r;
+}
+
+} // namespace
+
+int
+main(int argc, char** argv)
+{
+  std::string dir = "../shared/data/psb-dev";
+  std::size_t points = 20000;
+  bool json = false;
+  std::vector<int> only;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--points" && i + 1 < argc)
+      points = std::stoul(argv[++i]);
+    else if (arg == "--models" && i + 1 < argc) {
+      std::stringstream list(argv[++i]);
+      for (std::string item; std::getline(list, item, ',');)
+        only.push_back(std::stoi(item));
+    }
+    else if (arg == "--json")
+      json = true;
+    else if (!arg.empty() && arg[0] != '-')
+      dir = arg;
+    else {
+      std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json]\n";
+      return 2;
+    }
+  }
+  pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
+
+  std::vector<int> models;
+  for (const auto& entry : std::filesystem::directory_iterator(dir + "/off")) {
+    const int id = std::atoi(entry.path().stem().string().c_str());
+    if (id > 0 && (only.empty() || std::find(only.begin(), only.end(), id) != only.end()))
+      models.push_back(id);
+  }
+  std::sort(models.begin(), models.end());
+  if (models.empty()) {
+    std::cerr << "bench_cloud_psb: no model in " << dir << "/off\n";
+    return 1;
+  }
+
+  const char* names[3] = {"true_normals", "no_normals", "noise_0.5pct"};
+  std::map<int, std::vector<std::vector<Result>>> by_category; // category → condition → results
+  std::ostringstream rows;
+  std::vector<std::vector<Result>> all(3);
+  try {
+    for (int id : models) {
+      const std::string stem = std::to_string(id);
+      const segmat::TriangleMesh mesh = segmat::io::loadOff(dir + "/off/" + stem + ".off");
+      const SampledCloud clean = segmat::test::sampleMesh(mesh, points, 1);
+      SampledCloud noisy = clean;
+      segmat::test::addGaussianNoise(noisy, 0.005, 2);
+      std::vector<std::vector<int>> truths;
+      for (int k = 0;; ++k) {
+        const std::string path =
+            dir + "/seg/Benchmark/" + stem + "/" + stem + "_" + std::to_string(k) + ".seg";
+        if (!std::filesystem::exists(path))
+          break;
+        truths.push_back(clean.pointLabels(segmat::io::loadSeg(path, long(mesh.numFaces()))));
+      }
+      if (truths.empty())
+        continue;
+      const Result r[3] = {run(clean, true, truths), run(clean, false, truths),
+                           run(noisy, false, truths)};
+      const int category = (id - 1) / 20;
+      auto& cat = by_category[category];
+      cat.resize(3);
+      char line[256];
+      std::snprintf(line, sizeof line, "| %d | %s | %.4f | %.4f | %.4f | %d/%d/%d | %.2f/%.2f/%.2f |\n",
+                    id, kCategories[category], r[0].ri, r[1].ri, r[2].ri, r[0].parts, r[1].parts,
+                    r[2].parts, r[0].seconds, r[1].seconds, r[2].seconds);
+      rows << line;
+      for (int c = 0; c < 3; ++c) {
+        cat[c].push_back(r[c]);
+        all[c].push_back(r[c]);
+      }
+      if (!json)
+        std::cerr << line;
+    }
+  }
+  catch (const segmat::Error& e) {
+    std::cerr << "bench_cloud_psb: " << e.what() << "\n";
+    return 1;
+  }
+  auto mean = [](const std::vector<Result>& v, auto field) {
+    double s = 0;
+    for (const Result& r : v)
+      s += field(r);
+    return v.empty() ? 0.0 : s / double(v.size());
+  };
+  auto ri = [](const Result& r) { return r.ri; };
+  auto secs = [](const Result& r) { return r.seconds; };
+  auto nparts = [](const Result& r) { return double(r.parts); };
+  if (json) {
+    std::cout << "{\"points\": " << points << ", \"models\": " << all[0].size();
+    for (int c = 0; c < 3; ++c)
+      std::cout << ", \"" << names[c] << "\": {\"RI\": " << mean(all[c], ri)
+                << ", \"parts\": " << mean(all[c], nparts) << ", \"seconds\": " << mean(all[c], secs)
+                << "}";
+    std::cout << ", \"categories\": {";
+    bool first = true;
+    for (const auto& kv : by_category) {
+      std::cout << (first ? "" : ", ") << "\"" << kCategories[kv.first] << "\": ["
+                << mean(kv.second[0], ri) << ", " << mean(kv.second[1], ri) << ", "
+                << mean(kv.second[2], ri) << "]";
+      first = false;
+    }
+    std::cout << "}}\n";
+    return 0;
+  }
+  std::cout << "Point 1 − Rand index, " << points << " points per model, " << all[0].size()
+            << " models (mean over humans, then models)\n\n";
+  std::cout << "| model | category | RI true normals | RI no normals | RI noise 0.5 % | parts a/b/c | seconds a/b/c |\n|---|---|---|---|---|---|---|\n"
+            << rows.str();
+  std::cout << "\n| category | models | RI true normals | RI no normals | RI noise 0.5 % |\n|---|---|---|---|---|\n";
+  for (const auto& kv : by_category)
+    std::printf("| %s | %zu | %.4f | %.4f | %.4f |\n", kCategories[kv.first], kv.second[0].size(),
+                mean(kv.second[0], ri), mean(kv.second[1], ri), mean(kv.second[2], ri));
+  std::printf("| **all** | %zu | **%.4f** | **%.4f** | **%.4f** |\n", all[0].size(),
+              mean(all[0], ri), mean(all[1], ri), mean(all[2], ri));
+  std::printf("\nmean parts a/b/c: %.1f / %.1f / %.1f; mean seconds a/b/c: %.2f / %.2f / %.2f\n",
+              mean(all[0], nparts), mean(all[1], nparts), mean(all[2], nparts), mean(all[0], secs),
+              mean(all[1], secs), mean(all[2], secs));
+  return 0;
+}

@@ -1,0 +1,178 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ *
+ * segmat_cloud: segment a point cloud into parts with SEG-MAT's cloud path (meso-skeleton,
+ * region growing on the medial points, α-expansion back to every point).
+ */
+#include <segmat/common/error.h>
+#include <segmat/io/cloud.h>
+#include <segmat/io/colored_ply.h>
+#include <segmat/segmentation/cloud_segmentation.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+namespace {
+
+const char* const kUsage =
+    "usage: segmat_cloud CLOUD -o PREFIX [options] [--json]\n"
+    "  CLOUD              point cloud (.pcd, .ply, .xyz/.txt), with or without normals\n"
+    "  -o PREFIX          writes PREFIX.pcd (x y z label), PREFIX.ply (points coloured by\n"
+    "                     part) and PREFIX.labels (one label per input point, input order;\n"
+    "                     -1 for points with a non-finite coordinate)\n"
+    "  -g DELTA0          growing threshold (default 0.015)\n"
+    "  -n ETA             minimal region, fraction of the medial points (default 0.002)\n"
+    "  -w SIZE            working size: points kept for the medial step (default 20000)\n"
+    "  -k K               neighbours of the k-NN graphs (default 10)\n"
+    "  --estimate-normals ignore the file's normals and estimate them\n"
+    "  --no-visibility    merge parts without the visibility test\n"
+    "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"
+    "  --json             print one JSON object: parts, point_counts, seconds per stage\n";
+
+double
+parseNumber(const std::string& option, const std::string& text)
+{
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
+    throw segmat::Error("option " + option + ": '" + text + "' is not a number");
+  return value;
+}
+
+int
+parseCount(const std::string& option, const std::string& text, int minimum)
+{
+  const double value = parseNumber(option, text);
+  if (value != std::floor(value) || value < minimum || value > 1e9)
+    throw segmat::Error("option " + option + ": '" + text + "' must be an integer >= " +
+                        std::to_string(minimum));
+  return static_cast<int>(value);
+}
+
+double
+secondsSince(std::chrono::steady_clock::time_point& start)
+{
+  const auto now = std::chrono::steady_clock::now();
+  const double s = std::chrono::duration<double>(now - start).count();
+  start = now;
+  return s;
+}
+
+} // namespace
+
+int
+main(int argc, char** argv)
+{
+  std::string cloud_path, prefix;
+  bool json = false, estimate_normals = false;
+  segmat::CloudSegmentation<pcl::PointNormal> segmentation;
+  try {
+    for (int i = 1; i < argc; ++i) {
+      const std::string arg = argv[i];
+      const auto value = [&]() -> std::string {
+        if (i + 1 >= argc)
+          throw segmat::Error("option " + arg + " needs a value");
+        return argv[++i];
+      };
+      if (arg == "-h" || arg == "--help") {
+        std::cout << kUsage;
+        return 0;
+      }
+      if (arg == "-o")
+        prefix = value();
+      else if (arg == "-g") {
+        const double delta0 = parseNumber(arg, value());
+        if (!(delta0 > 0.0))
+          throw segmat::Error("option -g: the growing threshold must be > 0");
+        segmentation.setGrowingThreshold(delta0);
+      }
+      else if (arg == "-n") {
+        const double eta = parseNumber(arg, value());
+        if (eta < 0.0 || eta > 1.0)
+          throw segmat::Error("option -n: the minimal region fraction must be in [0, 1]");
+        segmentation.setMinRegionFraction(eta);
+      }
+      else if (arg == "-w")
+        segmentation.setWorkingSize(static_cast<std::size_t>(parseCount(arg, value(), 1)));
+      else if (arg == "-k")
+        segmentation.setKSearch(parseCount(arg, value(), 1));
+      else if (arg == "--threads")
+        segmentation.setNumberOfThreads(static_cast<unsigned>(parseCount(arg, value(), 1)));
+      else if (arg == "--estimate-normals")
+        estimate_normals = true;
+      else if (arg == "--no-visibility")
+        segmentation.setVisibilityFlag(false);
+      else if (arg == "--json")
+        json = true;
+      else if (!arg.empty() && arg[0] == '-')
+        throw segmat::Error("unknown option " + arg);
+      else if (cloud_path.empty())
+        cloud_path = arg;
+      else
+        throw segmat::Error("unexpected argument " + arg);
+    }
+    if (cloud_path.empty() || prefix.empty())
+      throw segmat::Error("CLOUD and -o are required");
+  }
+  catch (const segmat::Error& e) {
+    std::cerr << "segmat_cloud: " << e.what() << "\n" << kUsage;
+    return 2;
+  }
+
+  try {
+    auto start = std::chrono::steady_clock::now();
+    const segmat::io::LoadedCloud loaded = segmat::io::loadCloud(cloud_path);
+    const double load_seconds = secondsSince(start);
+    if (loaded.cloud->empty())
+      throw segmat::Error(cloud_path, 0, "the cloud has no points");
+
+    segmentation.setInputCloud(loaded.cloud);
+    segmentation.setUseInputNormalsFlag(loaded.has_normals && !estimate_normals);
+    std::vector<pcl::PointIndices> parts;
+    if (!segmentation.segment(parts))
+      throw segmat::Error(cloud_path, 0, "segmentation failed (no finite point?)");
+    secondsSince(start);
+
+    pcl::PointCloud<pcl::PointXYZL> labelled;
+    segmentation.getLabeledCloud(labelled);
+    segmat::io::saveLabeledCloudPcd(prefix + ".pcd", labelled);
+    segmat::io::saveColoredCloudPly(prefix + ".ply", labelled);
+    segmat::io::saveLabels(prefix + ".labels", segmentation.getLabels());
+    const double write_seconds = secondsSince(start);
+
+    std::vector<std::pair<std::string, double>> seconds{{"load", load_seconds}};
+    for (const auto& stage : segmentation.getStageSeconds())
+      seconds.push_back(stage);
+    seconds.emplace_back("write", write_seconds);
+
+    if (json) {
+      std::printf("{\"parts\": %zu, \"point_counts\": [", parts.size());
+      for (std::size_t k = 0; k < parts.size(); ++k)
+        std::printf("%s%zu", k ? ", " : "", parts[k].indices.size());
+      std::printf("], \"seconds\": {");
+      for (std::size_t k = 0; k < seconds.size(); ++k)
+        std::printf("%s\"%s\": %.6f", k ? ", " : "", seconds[k].first.c_str(), seconds[k].second);
+      std::printf("}}\n");
+    }
+    else {
+      std::printf("parts: %zu\npoint counts:", parts.size());
+      for (const auto& part : parts)
+        std::printf(" %zu", part.indices.size());
+      std::printf("\nseconds:");
+      for (const auto& stage : seconds)
+        std::printf(" %s %.4f", stage.first.c_str(), stage.second);
+      std::printf("\nwrote %s.pcd, %s.ply and %s.labels\n", prefix.c_str(), prefix.c_str(),
+                  prefix.c_str());
+    }
+  }
+  catch (const std::exception& e) {
+    std::cerr << "segmat_cloud: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

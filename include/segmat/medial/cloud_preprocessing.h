@@ -1,0 +1,185 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace segmat {
+
+/** \brief Turns a raw cloud into the working cloud of the medial step: finite, resampled to a
+ * working size, with unit normals oriented outward.
+ *
+ * The shrinking-ball step costs a nearest-neighbour query from a point deep inside the shape,
+ * which visits every sample near-equidistant from it, so its cost grows faster than linearly
+ * with density; the working cloud bounds it whatever the input size.
+ *
+ * Steps, in order:
+ *  1. drop points with a non-finite coordinate (and, when input normals are used, points whose
+ *     normal is non-finite or zero; if more than 1 % are bad the normals are estimated instead);
+ *  2. keep one point per voxel (segmat::voxelRepresentativesNear) when there are more than
+ *     the working size, then drop exact duplicates (lowest index kept);
+ *  3. normals: the input's, normalised (default when it has them); or, after
+ *     setSmoothingIterations() passes of robust quadratic smoothing of the positions,
+ *     pcl::NormalEstimationOMP over k neighbours (the result does not depend on the thread
+ *     count: every point's normal is computed alone), oriented by segmat::NormalOrientation.
+ */
+class CloudPreprocessing
+{
+public:
+  using Ptr = std::shared_ptr<CloudPreprocessing>;
+  using ConstPtr = std::shared_ptr<const CloudPreprocessing>;
+  using PointCloudIn = pcl::PointCloud<pcl::PointNormal>;
+
+  /** \brief Defaults: working size 20000, normals from 16 neighbours, up to 5 smoothing passes,
+   * orientation over 10, input normals used, threads chosen by OpenMP.
+   */
+  CloudPreprocessing();
+
+  /** \brief The raw cloud. Its normal fields are read only when setUseInputNormalsFlag(true). */
+  void
+  setInputCloud(const PointCloudIn::ConstPtr& cloud)
+  {
+    input_ = cloud;
+  }
+
+  /** \brief The raw cloud. */
+  const PointCloudIn::ConstPtr&
+  getInputCloud() const
+  {
+    return input_;
+  }
+
+  /** \brief Largest number of points kept for the medial step (> 0, default 20000). */
+  void
+  setWorkingSize(std::size_t size);
+
+  /** \brief Largest number of points kept for the medial step. */
+  std::size_t
+  getWorkingSize() const
+  {
+    return working_size_;
+  }
+
+  /** \brief Neighbours of the PCA normal estimate (>= 3, default 16). */
+  void
+  setNormalKSearch(int k);
+
+  /** \brief Neighbours of the PCA normal estimate. */
+  int
+  getNormalKSearch() const
+  {
+    return normal_k_;
+  }
+
+  /** \brief Neighbours of the orientation graph (> 0, default 10). */
+  void
+  setOrientationKSearch(int k);
+
+  /** \brief Neighbours of the orientation graph. */
+  int
+  getOrientationKSearch() const
+  {
+    return orientation_k_;
+  }
+
+  /** \brief Largest number of smoothing passes before normals are estimated (>= 0, default 5):
+   * each point moves onto a robust quadratic height field fitted to its 2·normal_k nearest
+   * neighbours (MLS-like); passes stop once the median move is below 5 % of the median spacing
+   * (a clean sample: one pass). Only clouds whose normals are estimated are smoothed: it takes
+   * scanner noise off before the shrinking balls, which stop on any sample that noise pushes
+   * inside a ball.
+   */
+  void
+  setSmoothingIterations(int iterations);
+
+  /** \brief Largest number of smoothing passes before normals are estimated. */
+  int
+  getSmoothingIterations() const
+  {
+    return smoothing_iterations_;
+  }
+
+  /** \brief Use the input's normals (true, default) or estimate them (false). Input normals
+   * are trusted to be oriented outward.
+   */
+  void
+  setUseInputNormalsFlag(bool flag)
+  {
+    use_input_normals_ = flag;
+  }
+
+  /** \brief Whether the input's normals are used. */
+  bool
+  getUseInputNormalsFlag() const
+  {
+    return use_input_normals_;
+  }
+
+  /** \brief Threads of the normal estimation (0: OpenMP's choice, default). */
+  void
+  setNumberOfThreads(unsigned int threads)
+  {
+    threads_ = threads;
+  }
+
+  /** \brief Threads of the normal estimation. */
+  unsigned int
+  getNumberOfThreads() const
+  {
+    return threads_;
+  }
+
+  /** \brief Build the working cloud.
+   * \param[out] working finite points with unit, outward normals (empty on failure)
+   * \return false (PCL_ERROR) when there is no input, no finite point, or fewer than 3 points
+   *         with a usable normal
+   */
+  bool
+  compute(pcl::PointCloud<pcl::PointNormal>& working);
+
+  /** \brief For each working point, its index in the input cloud (from the last compute()). */
+  const std::vector<int>&
+  getWorkingIndices() const
+  {
+    return working_indices_;
+  }
+
+  /** \brief For each input point, the working point that stands for it (from the last
+   * compute()): its voxel's representative, or the nearest working point when that
+   * representative was dropped (duplicate, unusable normal); -1 for non-finite points.
+   * Labels of the working cloud reach every input point through this map.
+   */
+  const std::vector<int>&
+  getInputToWorking() const
+  {
+    return input_to_working_;
+  }
+
+  /** \brief True when the last compute() estimated the normals. */
+  bool
+  getNormalsEstimated() const
+  {
+    return normals_estimated_;
+  }
+
+private:
+  PointCloudIn::ConstPtr input_;
+  std::size_t working_size_;
+  int normal_k_;
+  int orientation_k_;
+  int smoothing_iterations_;
+  bool use_input_normals_;
+  unsigned int threads_;
+  std::vector<int> working_indices_;
+  std::vector<int> input_to_working_;
+  bool normals_estimated_ = false;
+};
+
+} // namespace segmat

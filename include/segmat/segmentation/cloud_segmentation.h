@@ -1,0 +1,361 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <segmat/common/point_types.h>
+#include <segmat/medial/meso_skeleton_estimation.h>
+#include <segmat/segmentation/label_transfer.h>
+#include <segmat/segmentation/mat_graph.h>
+#include <segmat/segmentation/mat_region_growing.h>
+
+#include <pcl/PointIndices.h>
+#include <pcl/pcl_base.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace segmat {
+
+namespace detail {
+
+/** \brief What CloudSegmentation does once the meso-skeleton exists (untyped core).
+ * \param[in] skeleton the medial points (MesoSkeletonEstimation)
+ * \param[in] working the working cloud with oriented normals the skeleton came from
+ * \param[in] medial_k neighbours of the medial point graph
+ * \param[in] transfer_k neighbours of the working cloud's graph in the transfer
+ * \param[in] visibility use the ball-union visibility when merging parts
+ * \param[in,out] grower the grower, parameters set (its graph and visibility are set here)
+ * \param[in,out] transfer the transfer, ω set (its inputs are set here)
+ * \param[out] graph the MAT graph
+ * \param[out] working_labels one label per working point, in growing order (compacted)
+ * \param[out] label_parts for each label, the index of its part in \a parts
+ * \param[out] parts the grower's parts (MAT-graph nodes)
+ * \param[in,out] stage_seconds "graph", "grow_merge", "transfer" are appended
+ * \return false (PCL_ERROR) when a stage fails
+ */
+bool
+segmentWorkingCloud(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton,
+                    const pcl::PointCloud<pcl::PointNormal>& working, int medial_k,
+                    int transfer_k, bool visibility, MatRegionGrowing& grower,
+                    CloudLabelTransfer& transfer, MatGraph::Ptr& graph,
+                    std::vector<int>& working_labels, std::vector<int>& label_parts,
+                    std::vector<pcl::PointIndices>& parts,
+                    std::vector<std::pair<std::string, double>>& stage_seconds);
+
+/** \brief Input labels from working labels, renumbered by descending point count (ties: the
+ * lower label first); parts[l] lists the input points of label l, ascending.
+ * \param[in] input_to_working per input point, its working point (-1: no label)
+ * \param[in] working_labels per working point, its label
+ * \param[out] labels per input point (-1 where input_to_working is -1)
+ * \param[out] parts per final label, its input points
+ * \param[out] rank per working label, its final label
+ */
+void
+labelInputPoints(const std::vector<int>& input_to_working, const std::vector<int>& working_labels,
+                 std::vector<int>& labels, std::vector<pcl::PointIndices>& parts,
+                 std::vector<int>& rank);
+
+} // namespace detail
+
+/** \brief End-to-end part segmentation of a point cloud with SEG-MAT (Lin et al., "SEG-MAT: 3D
+ * Shape Segmentation Using Medial Axis Transform", IEEE TVCG 2022, §6: point clouds).
+ *
+ * Stages, each timed (getStageSeconds()):
+ *  1. "preprocessing": finite points, resampled to the working size (~20k), normals (the
+ *     cloud's own, or PCA + MST orientation) — segmat::CloudPreprocessing;
+ *  2. "medial": shrinking balls, filters, contraction, reduction to ~2000 medial points —
+ *     segmat::MesoSkeletonEstimation;
+ *  3. "graph": the MAT graph of the medial points — segmat::MedialPointGraph;
+ *  4. "grow_merge": the mesh path's grower, unchanged (segmat::MatRegionGrowing: growing,
+ *     swallowing, tiny patches); with point nodes its cost is C_r + α·C_θ (no medial
+ *     primitives: C_mp drops out). No structured MAT exists for a cloud, so every node is bulky
+ *     (tag 0). Then SEG-MAT's three merging rounds with the grower's own pieces, but with
+ *     patches adjacent when a graph edge joins them (the grower asks for a shared sphere, which
+ *     point nodes never have; see src/segmentation/cloud_segmentation.cpp). Merging tests
+ *     visibility against the union of the medial balls (segmat::BallUnionVisibility;
+ *     setVisibilityFlag);
+ *  5. "transfer": α-expansion on the working cloud's k-NN graph (segmat::CloudLabelTransfer,
+ *     data term = distance to each part's balls, crease-aware smoothness from the oriented
+ *     normals; two cycles, as the reference); every input point then takes the label of the
+ *     working point standing for it (its voxel's representative): "labels".
+ * Parts are numbered by descending point count. A cloud that encloses no volume (a flat patch,
+ * a handful of points) is one part, with a warning.
+ *
+ * \code
+ * pcl::PointCloud<pcl::PointNormal>::Ptr cloud = ...;   // or PointXYZ: normals are estimated
+ * segmat::CloudSegmentation<pcl::PointNormal> seg;
+ * seg.setInputCloud(cloud);
+ * std::vector<pcl::PointIndices> parts;
+ * if (seg.segment(parts)) {
+ *   const std::vector<int>& labels = seg.getLabels();  // one per input point
+ *   pcl::PointCloud<pcl::PointXYZL> labelled;
+ *   seg.getLabeledCloud(labelled);
+ * }
+ * \endcode
+ *
+ * PointT: any PCL type with xyz (instantiated for pcl::PointXYZ, pcl::PointNormal,
+ * pcl::PointXYZRGBNormal). setIndices() restricts the segmentation to a subset; the other
+ * points get label -1.
+ */
+template <typename PointT>
+class CloudSegmentation : public pcl::PCLBase<PointT>
+{
+public:
+  using Ptr = std::shared_ptr<CloudSegmentation<PointT>>;
+  using ConstPtr = std::shared_ptr<const CloudSegmentation<PointT>>;
+  using PointCloud = pcl::PointCloud<PointT>;
+
+  /** \brief Paper defaults: δ0 = 0.015, η = 0.002, α = 0.05, λ = 1.5, ω = 0.3; working size
+   * 20000, k = 10, input normals used, visibility on.
+   */
+  CloudSegmentation();
+
+  /** \brief δ0, the growing threshold (default 0.015). */
+  void
+  setGrowingThreshold(double delta0)
+  {
+    grower_.setGrowingThreshold(delta0);
+  }
+
+  /** \brief δ0. */
+  double
+  getGrowingThreshold() const
+  {
+    return grower_.getGrowingThreshold();
+  }
+
+  /** \brief η, the minimal region size as a fraction of the medial points (default 0.002). */
+  void
+  setMinRegionFraction(double eta)
+  {
+    grower_.setMinRegionFraction(eta);
+  }
+
+  /** \brief η. */
+  double
+  getMinRegionFraction() const
+  {
+    return grower_.getMinRegionFraction();
+  }
+
+  /** \brief α, weight of the angle term of the growing cost (default 0.05). */
+  void
+  setAngleWeight(double alpha)
+  {
+    grower_.setAngleWeight(alpha);
+  }
+
+  /** \brief α. */
+  double
+  getAngleWeight() const
+  {
+    return grower_.getAngleWeight();
+  }
+
+  /** \brief λ, weight of the medial-primitive term (default 1.5; without effect on point
+   * nodes, kept for one parameter set across both paths).
+   */
+  void
+  setPrimitiveWeight(double lambda)
+  {
+    grower_.setPrimitiveWeight(lambda);
+  }
+
+  /** \brief λ. */
+  double
+  getPrimitiveWeight() const
+  {
+    return grower_.getPrimitiveWeight();
+  }
+
+  /** \brief ω, weight of the graph cut's smoothness term (default 0.3). */
+  void
+  setSmoothnessWeight(double omega)
+  {
+    transfer_.setSmoothnessWeight(omega);
+  }
+
+  /** \brief ω. */
+  double
+  getSmoothnessWeight() const
+  {
+    return transfer_.getSmoothnessWeight();
+  }
+
+  /** \brief Points kept for the medial step and the graph cut (> 0, default 20000). */
+  void
+  setWorkingSize(std::size_t size)
+  {
+    skeleton_estimation_.setWorkingSize(size);
+  }
+
+  /** \brief Points kept for the medial step and the graph cut. */
+  std::size_t
+  getWorkingSize() const
+  {
+    return skeleton_estimation_.getParameters().working_size;
+  }
+
+  /** \brief Neighbours of the k-NN graphs (medial points and the transfer's points; > 0,
+   * default 10).
+   */
+  void
+  setKSearch(int k);
+
+  /** \brief Neighbours of the k-NN graphs. */
+  int
+  getKSearch() const
+  {
+    return k_;
+  }
+
+  /** \brief Use the cloud's normals when PointT has them (default true); false estimates them.
+   */
+  void
+  setUseInputNormalsFlag(bool flag)
+  {
+    skeleton_estimation_.setUseInputNormalsFlag(flag);
+  }
+
+  /** \brief Whether the cloud's normals are used when PointT has them. */
+  bool
+  getUseInputNormalsFlag() const
+  {
+    return skeleton_estimation_.getParameters().use_input_normals;
+  }
+
+  /** \brief Test visibility inside the medial balls before merging parts (default true). */
+  void
+  setVisibilityFlag(bool flag)
+  {
+    visibility_ = flag;
+  }
+
+  /** \brief Whether merging tests visibility. */
+  bool
+  getVisibilityFlag() const
+  {
+    return visibility_;
+  }
+
+  /** \brief Threads of the parallel steps (0: OpenMP's choice; results do not depend on it). */
+  void
+  setNumberOfThreads(unsigned int threads)
+  {
+    skeleton_estimation_.setNumberOfThreads(threads);
+  }
+
+  /** \brief Every meso-skeleton parameter (advanced; see segmat::MesoSkeletonParameters). */
+  void
+  setMesoSkeletonParameters(const MesoSkeletonParameters& params)
+  {
+    skeleton_estimation_.setParameters(params);
+  }
+
+  /** \brief The meso-skeleton parameters. */
+  const MesoSkeletonParameters&
+  getMesoSkeletonParameters() const
+  {
+    return skeleton_estimation_.getParameters();
+  }
+
+  /** \brief Segment the cloud (through the indices, when set).
+   * \param[out] parts one entry per part, by descending size: the input points of the part,
+   *             ascending. Empty on failure.
+   * \return false (PCL_ERROR) when there is no input, no finite point, or a stage fails
+   */
+  bool
+  segment(std::vector<pcl::PointIndices>& parts);
+
+  /** \brief One label per input point from the last segment(): the part number, -1 for
+   * non-finite points and points outside the indices.
+   */
+  const std::vector<int>&
+  getLabels() const
+  {
+    return labels_;
+  }
+
+  /** \brief The input points with their labels (unlabelled: label 0xffffffff). */
+  void
+  getLabeledCloud(pcl::PointCloud<pcl::PointXYZL>& cloud) const;
+
+  /** \brief The input points with their labels and a colour per label (pcl::GlasbeyLUT;
+   * unlabelled points black, label 0xffffffff).
+   */
+  void
+  getLabeledCloud(pcl::PointCloud<pcl::PointXYZRGBL>& cloud) const;
+
+  /** \brief The meso-skeleton of the last segment(): medial points with radii and normals. */
+  pcl::PointCloud<MedialPoint>::ConstPtr
+  getMesoSkeleton() const
+  {
+    return skeleton_;
+  }
+
+  /** \brief The MAT graph of the last segment() (null when none was built). */
+  MatGraph::ConstPtr
+  getGraph() const
+  {
+    return graph_;
+  }
+
+  /** \brief Medial points of each part of the last segment(), in label order. */
+  const std::vector<pcl::PointIndices>&
+  getMatParts() const
+  {
+    return mat_parts_;
+  }
+
+  /** \brief Seconds per stage of the last segment(), in pipeline order: "preprocessing",
+   * "medial", "graph", "grow_merge", "transfer", "labels".
+   */
+  const std::vector<std::pair<std::string, double>>&
+  getStageSeconds() const
+  {
+    return stage_seconds_;
+  }
+
+  /** \brief Sizes and timings of the meso-skeleton step of the last segment(). */
+  const MesoSkeletonStatistics&
+  getMesoSkeletonStatistics() const
+  {
+    return skeleton_estimation_.getStatistics();
+  }
+
+protected:
+  using pcl::PCLBase<PointT>::input_;
+  using pcl::PCLBase<PointT>::indices_;
+  using pcl::PCLBase<PointT>::initCompute;
+  using pcl::PCLBase<PointT>::deinitCompute;
+
+private:
+  /** \brief Copies the input's xyz and the labels (and Glasbey colours for coloured types). */
+  template <typename LabeledT>
+  void
+  fillLabeledCloud(pcl::PointCloud<LabeledT>& cloud) const;
+
+  MesoSkeletonEstimation<PointT> skeleton_estimation_;
+  MatRegionGrowing grower_;
+  CloudLabelTransfer transfer_;
+  int k_ = 10;
+  bool visibility_ = true;
+
+  pcl::PointCloud<MedialPoint>::Ptr skeleton_;
+  MatGraph::Ptr graph_;
+  std::vector<int> labels_;
+  std::vector<pcl::PointIndices> mat_parts_;
+  std::vector<std::pair<std::string, double>> stage_seconds_;
+};
+
+} // namespace segmat
+
+#if defined(PCL_NO_PRECOMPILE) || defined(SEGMAT_NO_PRECOMPILE)
+#include <segmat/segmentation/impl/cloud_segmentation.hpp>
+#endif

@@ -1,0 +1,158 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <segmat/segmentation/cloud_segmentation.h>
+
+#include <pcl/common/colors.h>
+#include <pcl/common/point_tests.h>
+#include <pcl/console/print.h>
+#include <pcl/type_traits.h>
+
+#include <chrono>
+#include <cstdint>
+#include <limits>
+
+namespace segmat {
+
+template <typename PointT>
+CloudSegmentation<PointT>::CloudSegmentation()
+{
+  // Two α-expansion cycles, as the reference (GCO expansion(2)): a cycle costs one max-flow per
+  // part on the working cloud's graph, and later cycles change few points.
+  transfer_.setMaxCycles(2);
+}
+
+template <typename PointT>
+void
+CloudSegmentation<PointT>::setKSearch(int k)
+{
+  if (k <= 0) {
+    PCL_WARN("[segmat::CloudSegmentation::setKSearch] k must be positive; keeping %d.\n", k_);
+    return;
+  }
+  k_ = k;
+}
+
+template <typename PointT>
+bool
+CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
+{
+  parts.clear();
+  labels_.clear();
+  mat_parts_.clear();
+  stage_seconds_.clear();
+  graph_.reset();
+  skeleton_.reset(new pcl::PointCloud<MedialPoint>);
+  if (!input_) {
+    PCL_ERROR("[segmat::CloudSegmentation::segment] No input cloud.\n");
+    return false;
+  }
+  if (!initCompute()) {
+    PCL_ERROR("[segmat::CloudSegmentation::segment] Cannot initialise (no input?).\n");
+    return false;
+  }
+
+  skeleton_estimation_.setInputCloud(input_);
+  skeleton_estimation_.setIndices(indices_);
+  const bool skeleton_ok = skeleton_estimation_.compute(*skeleton_);
+  const MesoSkeletonStatistics& stats = skeleton_estimation_.getStatistics();
+  stage_seconds_.emplace_back("preprocessing", stats.seconds_preprocessing);
+  stage_seconds_.emplace_back("medial", stats.seconds_balls + stats.seconds_medial);
+
+  if (!skeleton_ok) {
+    // No medial point: one part when there is anything to label at all.
+    pcl::PointIndices all;
+    for (const auto i : *indices_)
+      if (pcl::isXYZFinite((*input_)[i]))
+        all.indices.push_back(i);
+    if (all.indices.empty()) {
+      PCL_ERROR("[segmat::CloudSegmentation::segment] The cloud has no finite point.\n");
+      stage_seconds_.clear();
+      deinitCompute();
+      return false;
+    }
+    PCL_WARN("[segmat::CloudSegmentation::segment] No medial point (the cloud encloses no "
+             "volume, or has too few points): one part.\n");
+    std::sort(all.indices.begin(), all.indices.end());
+    all.indices.erase(std::unique(all.indices.begin(), all.indices.end()), all.indices.end());
+    labels_.assign(input_->size(), -1);
+    for (const auto i : all.indices)
+      labels_[i] = 0;
+    parts.push_back(all);
+    deinitCompute();
+    return true;
+  }
+
+  std::vector<int> working_labels, label_parts;
+  std::vector<pcl::PointIndices> grown;
+  if (!detail::segmentWorkingCloud(skeleton_, skeleton_estimation_.getWorkingCloud(), k_, k_,
+                                   visibility_, grower_, transfer_, graph_, working_labels,
+                                   label_parts, grown, stage_seconds_)) {
+    stage_seconds_.clear();
+    deinitCompute();
+    return false;
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<int> rank;
+  detail::labelInputPoints(skeleton_estimation_.getInputToWorking(), working_labels, labels_,
+                           parts, rank);
+  mat_parts_.assign(parts.size(), pcl::PointIndices());
+  for (std::size_t l = 0; l < rank.size(); ++l)
+    if (rank[l] >= 0)
+      mat_parts_[rank[l]] = grown[label_parts[l]];
+  stage_seconds_.emplace_back(
+      "labels",
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  deinitCompute();
+  return true;
+}
+
+template <typename PointT>
+template <typename LabeledT>
+void
+CloudSegmentation<PointT>::fillLabeledCloud(pcl::PointCloud<LabeledT>& cloud) const
+{
+  cloud.clear();
+  if (!input_ || labels_.size() != input_->size())
+    return;
+  cloud.resize(input_->size());
+  for (std::size_t i = 0; i < input_->size(); ++i) {
+    LabeledT& out = cloud[i];
+    out.getVector3fMap() = (*input_)[i].getVector3fMap();
+    out.label = labels_[i] >= 0 ? std::uint32_t(labels_[i])
+                                : std::numeric_limits<std::uint32_t>::max();
+    if constexpr (pcl::traits::has_color_v<LabeledT>) {
+      const pcl::RGB colour =
+          labels_[i] >= 0 ? pcl::GlasbeyLUT::at(std::size_t(labels_[i]) % pcl::GlasbeyLUT::size())
+                          : pcl::RGB(0, 0, 0);
+      out.r = colour.r;
+      out.g = colour.g;
+      out.b = colour.b;
+    }
+  }
+  cloud.width = input_->width;
+  cloud.height = input_->height;
+  cloud.is_dense = input_->is_dense;
+}
+
+template <typename PointT>
+void
+CloudSegmentation<PointT>::getLabeledCloud(pcl::PointCloud<pcl::PointXYZL>& cloud) const
+{
+  fillLabeledCloud(cloud);
+}
+
+template <typename PointT>
+void
+CloudSegmentation<PointT>::getLabeledCloud(pcl::PointCloud<pcl::PointXYZRGBL>& cloud) const
+{
+  fillLabeledCloud(cloud);
+}
+
+} // namespace segmat
+
+#define SEGMAT_INSTANTIATE_CloudSegmentation(T) template class segmat::CloudSegmentation<T>;

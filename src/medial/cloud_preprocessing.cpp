@@ -1,0 +1,319 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include <segmat/medial/cloud_preprocessing.h>
+#include <segmat/medial/normal_orientation.h>
+#include <segmat/medial/voxel_sampling.h>
+
+#include "local_fit.h"
+#include "thread_count.h"
+
+#include <pcl/console/print.h>
+#include <pcl/features/normal_3d_omp.h>
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/search/kdtree.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <tuple>
+
+namespace segmat {
+namespace {
+
+bool
+finitePoint(const pcl::PointNormal& p)
+{
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+bool
+usableNormal(const pcl::PointNormal& p)
+{
+  const Eigen::Vector3f n = p.getNormalVector3fMap();
+  return n.allFinite() && n.squaredNorm() > 0.0f;
+}
+
+/// Removes exact coordinate duplicates from \a indices (keeps the lowest index), keeps order.
+void
+dropExactDuplicates(const pcl::PointCloud<pcl::PointNormal>& cloud, std::vector<int>& indices)
+{
+  std::vector<int> order = indices;
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return std::make_tuple(cloud[a].x, cloud[a].y, cloud[a].z, a) <
+           std::make_tuple(cloud[b].x, cloud[b].y, cloud[b].z, b);
+  });
+  std::vector<char> drop(cloud.size(), 0);
+  bool any = false;
+  for (std::size_t i = 1; i < order.size(); ++i)
+    if (cloud[order[i]].getVector3fMap() == cloud[order[i - 1]].getVector3fMap()) {
+      drop[order[i]] = 1;
+      any = true;
+    }
+  if (any)
+    indices.erase(std::remove_if(indices.begin(), indices.end(), [&](int i) { return drop[i]; }),
+                  indices.end());
+}
+
+/// One pass of robust quadratic (MLS-like) smoothing: every point moves onto the height field
+/// fitted to its k nearest neighbours (detail::fitLocalStructure, sheet). A plane fit would
+/// pull thin tubes inwards by about a²/(4R) (a the neighbourhood's size); a quadratic does not.
+/// Returns the median move divided by the median distance to the nearest neighbour (0 when
+/// nothing moved): about 0 on a clean sample, about the noise over the spacing on a noisy one.
+double
+smoothSurface(std::vector<Eigen::Vector3f>& positions, int k, int threads)
+{
+  const int n = static_cast<int>(positions.size());
+  if (n < 6)
+    return 0.0;
+  std::vector<float> moves(n, 0.0f), spacing(n, 0.0f);
+  const auto cloud = detail::toXYZ(positions);
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud(cloud);
+  const int kk = std::min(k, n);
+  std::vector<Eigen::Vector3f> moved(positions);
+#pragma omp parallel num_threads(threads)
+  {
+    pcl::Indices nn;
+    std::vector<float> d2;
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      if (tree.nearestKSearch((*cloud)[i], kk, nn, d2) < 6 || !(d2.back() > 0.0f))
+        continue;
+      const double support = std::sqrt(double(d2.back()));
+      moved[i] = detail::fitLocalStructure(positions, i, nn, d2, support,
+                                           detail::LocalShape::Sheet, support)
+                     .cast<float>();
+      moves[i] = (moved[i] - positions[i]).norm();
+      spacing[i] = std::sqrt(d2[1]); // d2[0] is the point itself
+    }
+  }
+  positions.swap(moved);
+  auto median = [](std::vector<float>& v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return double(v[v.size() / 2]);
+  };
+  const double typical_spacing = median(spacing);
+  return typical_spacing > 0.0 ? median(moves) / typical_spacing : 0.0;
+}
+
+} // namespace
+
+CloudPreprocessing::CloudPreprocessing()
+: working_size_(20000)
+, normal_k_(16)
+, orientation_k_(10)
+, smoothing_iterations_(5)
+, use_input_normals_(true)
+, threads_(0)
+{}
+
+void
+CloudPreprocessing::setWorkingSize(std::size_t size)
+{
+  if (size == 0) {
+    PCL_WARN("[segmat::CloudPreprocessing::setWorkingSize] The size must be positive; keeping "
+             "%zu.\n", working_size_);
+    return;
+  }
+  working_size_ = size;
+}
+
+void
+CloudPreprocessing::setNormalKSearch(int k)
+{
+  if (k < 3) {
+    PCL_WARN("[segmat::CloudPreprocessing::setNormalKSearch] k must be at least 3; keeping "
+             "%d.\n", normal_k_);
+    return;
+  }
+  normal_k_ = k;
+}
+
+void
+CloudPreprocessing::setOrientationKSearch(int k)
+{
+  if (k <= 0) {
+    PCL_WARN("[segmat::CloudPreprocessing::setOrientationKSearch] k must be positive; keeping "
+             "%d.\n", orientation_k_);
+    return;
+  }
+  orientation_k_ = k;
+}
+
+void
+CloudPreprocessing::setSmoothingIterations(int iterations)
+{
+  if (iterations < 0) {
+    PCL_WARN("[segmat::CloudPreprocessing::setSmoothingIterations] The count must be >= 0; "
+             "keeping %d.\n", smoothing_iterations_);
+    return;
+  }
+  smoothing_iterations_ = iterations;
+}
+
+bool
+CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
+{
+  working.clear();
+  working_indices_.clear();
+  input_to_working_.clear();
+  normals_estimated_ = false;
+  if (!input_ || input_->empty()) {
+    PCL_ERROR("[segmat::CloudPreprocessing::compute] No input cloud, or it is empty.\n");
+    return false;
+  }
+  const PointCloudIn& in = *input_;
+
+  // 1. Finite points; input normals when asked for and good enough.
+  std::vector<int> candidates;
+  candidates.reserve(in.size());
+  for (std::size_t i = 0; i < in.size(); ++i)
+    if (finitePoint(in[i]))
+      candidates.push_back(static_cast<int>(i));
+  if (candidates.empty()) {
+    PCL_ERROR("[segmat::CloudPreprocessing::compute] The cloud has no finite point.\n");
+    return false;
+  }
+  bool estimate = !use_input_normals_;
+  if (!estimate) {
+    const auto bad = std::count_if(candidates.begin(), candidates.end(),
+                                   [&](int i) { return !usableNormal(in[i]); });
+    if (bad > 0 && std::size_t(bad) * 100 > candidates.size()) {
+      PCL_WARN("[segmat::CloudPreprocessing::compute] %zu of %zu input normals are unusable; "
+               "estimating normals instead.\n", std::size_t(bad), candidates.size());
+      estimate = true;
+    }
+    else if (bad > 0)
+      candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                                      [&](int i) { return !usableNormal(in[i]); }),
+                       candidates.end());
+  }
+
+  // 2. Resample to the working size, then drop exact duplicates.
+  std::vector<Eigen::Vector3f> positions(candidates.size());
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    positions[i] = in[candidates[i]].getVector3fMap();
+  // representative[c]: the candidate (position in candidates) standing for candidate c.
+  std::vector<int> representative(candidates.size());
+  const double voxel = voxelSizeForCount(positions, working_size_);
+  std::vector<int> kept;
+  if (voxel > 0.0)
+    kept = voxelRepresentatives(positions, voxel, &representative);
+  else {
+    kept.resize(candidates.size());
+    std::iota(kept.begin(), kept.end(), 0);
+    representative = kept;
+  }
+  for (int& k : kept)
+    k = candidates[k];
+  dropExactDuplicates(in, kept);
+  if (kept.size() < 3) {
+    PCL_ERROR("[segmat::CloudPreprocessing::compute] %zu distinct finite point(s): at least 3 "
+              "are needed.\n", kept.size());
+    return false;
+  }
+
+  pcl::PointCloud<pcl::PointNormal> cloud;
+  cloud.resize(kept.size());
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    cloud[i] = in[kept[i]];
+    cloud[i].curvature = 0.0f;
+    if (!estimate)
+      cloud[i].getNormalVector3fMap().normalize();
+  }
+
+  // 3. Estimated normals: smoothing, PCA, then MST orientation.
+  if (estimate) {
+    normals_estimated_ = true;
+    const int threads = detail::threadCount(threads_);
+    std::vector<Eigen::Vector3f> positions(cloud.size());
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      positions[i] = cloud[i].getVector3fMap();
+    // Passes go on while they still move points by a noticeable part of the spacing: a clean
+    // sample stops after one, a noisy scan gets up to the maximum.
+    for (int it = 0; it < smoothing_iterations_; ++it)
+      if (smoothSurface(positions, 2 * normal_k_, threads) < 0.05)
+        break;
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      cloud[i].getVector3fMap() = positions[i];
+    const pcl::PointCloud<pcl::PointXYZ>::Ptr xyz = detail::toXYZ(positions);
+    pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> estimation(threads_);
+    estimation.setInputCloud(xyz);
+    estimation.setSearchMethod(pcl::search::KdTree<pcl::PointXYZ>::Ptr(
+        new pcl::search::KdTree<pcl::PointXYZ>));
+    estimation.setKSearch(std::min<int>(normal_k_, static_cast<int>(cloud.size())));
+    pcl::PointCloud<pcl::Normal> normals;
+    estimation.compute(normals);
+    std::vector<int> usable;
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      const Eigen::Vector3f nv = normals[i].getNormalVector3fMap();
+      if (nv.allFinite() && nv.squaredNorm() > 0.0f) {
+        cloud[i].getNormalVector3fMap() = nv.normalized();
+        cloud[i].curvature = normals[i].curvature;
+        usable.push_back(static_cast<int>(i));
+      }
+    }
+    if (usable.size() < 3) {
+      PCL_ERROR("[segmat::CloudPreprocessing::compute] No usable normal could be estimated "
+                "(degenerate cloud).\n");
+      return false;
+    }
+    if (usable.size() < cloud.size()) {
+      pcl::PointCloud<pcl::PointNormal> subset;
+      std::vector<int> subset_kept;
+      for (int i : usable) {
+        subset.push_back(cloud[i]);
+        subset_kept.push_back(kept[i]);
+      }
+      cloud.swap(subset);
+      kept.swap(subset_kept);
+    }
+    NormalOrientation orientation;
+    orientation.setKSearch(orientation_k_);
+    if (!orientation.orient(cloud))
+      return false;
+  }
+
+  // Every finite input point's stand-in: its voxel representative when that survived, else
+  // the nearest working point (dropped duplicates, dropped normals).
+  std::vector<int> working_of_input(in.size(), -1);
+  for (std::size_t w = 0; w < kept.size(); ++w)
+    working_of_input[kept[w]] = static_cast<int>(w);
+  input_to_working_.assign(in.size(), -1);
+  std::vector<int> unresolved;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    const int w = working_of_input[candidates[representative[c]]];
+    if (w >= 0)
+      input_to_working_[candidates[c]] = w;
+  }
+  for (std::size_t i = 0; i < in.size(); ++i)
+    if (input_to_working_[i] < 0 && finitePoint(in[i]))
+      unresolved.push_back(static_cast<int>(i));
+  if (!unresolved.empty()) {
+    pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
+    xyz->resize(cloud.size());
+    for (std::size_t w = 0; w < cloud.size(); ++w)
+      (*xyz)[w].getVector3fMap() = cloud[w].getVector3fMap();
+    pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+    tree.setInputCloud(xyz);
+    pcl::Indices nn;
+    std::vector<float> d2;
+    pcl::PointXYZ query;
+    for (int i : unresolved) {
+      query.getVector3fMap() = in[i].getVector3fMap();
+      if (tree.nearestKSearch(query, 1, nn, d2) > 0)
+        input_to_working_[i] = nn[0];
+    }
+  }
+
+  working.swap(cloud);
+  working.width = static_cast<std::uint32_t>(working.size());
+  working.height = 1;
+  working.is_dense = true;
+  working_indices_.swap(kept);
+  return true;
+}
+
+} // namespace segmat

@@ -1,0 +1,202 @@
+// MST normal orientation and the cloud pre-processing that uses it.
+#include "util/cloud_sampler.h"
+
+#include <segmat/medial/cloud_preprocessing.h>
+#include <segmat/medial/normal_orientation.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+using namespace segmat;
+using namespace segmat::test;
+
+namespace {
+
+/// The cloud with about half of its normals reversed, chosen by a seeded engine.
+pcl::PointCloud<pcl::PointNormal>::Ptr
+withShuffledSigns(const SampledCloud& sampled, std::uint32_t seed)
+{
+  auto cloud = sampled.toPointNormal();
+  std::mt19937 rng(seed);
+  for (auto& p : *cloud)
+    if (rng() & 1u)
+      p.getNormalVector3fMap() *= -1.0f;
+  return cloud;
+}
+
+/// Points whose normal agrees in sign with the true outward normal.
+std::size_t
+countOutward(const pcl::PointCloud<pcl::PointNormal>& cloud, const SampledCloud& truth,
+             const std::vector<int>& index_in_truth)
+{
+  std::size_t outward = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    outward += cloud[i].getNormalVector3fMap().dot(truth.normals[index_in_truth[i]]) > 0.0f;
+  return outward;
+}
+
+std::vector<int>
+identity(std::size_t n)
+{
+  std::vector<int> v(n);
+  for (std::size_t i = 0; i < n; ++i)
+    v[i] = static_cast<int>(i);
+  return v;
+}
+
+} // namespace
+
+TEST(NormalOrientation, ShuffledSignsOnClosedSurfacesComeOutOutward)
+{
+  for (const SampledCloud& shape : {sphereCloud(3000, 11), torusCloud(4000, 12)}) {
+    auto cloud = withShuffledSigns(shape, 5);
+    NormalOrientation orientation;
+    ASSERT_TRUE(orientation.orient(*cloud));
+    EXPECT_EQ(orientation.getNumberOfComponents(), 1u);
+    EXPECT_EQ(countOutward(*cloud, shape, identity(shape.size())), shape.size());
+    // About half were reversed by the shuffle, and only those are reversed back.
+    EXPECT_NEAR(double(orientation.getNumberOfReversed()), shape.size() / 2.0,
+                0.05 * shape.size());
+  }
+}
+
+TEST(NormalOrientation, AllInwardIsReversedAndSeparateComponentsAreEachOriented)
+{
+  // Two spheres far apart with every normal pointing inward: two components, all reversed.
+  SampledCloud a = sphereCloud(1500, 1), b = sphereCloud(1500, 2);
+  SampledCloud both;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    both.points.push_back(a.points[i]);
+    both.normals.push_back(a.normals[i]);
+    both.points.push_back(b.points[i] + Eigen::Vector3f(10, 0, 0));
+    both.normals.push_back(b.normals[i]);
+  }
+  auto cloud = both.toPointNormal();
+  for (auto& p : *cloud)
+    p.getNormalVector3fMap() *= -1.0f;
+  NormalOrientation orientation;
+  ASSERT_TRUE(orientation.orient(*cloud));
+  EXPECT_EQ(orientation.getNumberOfComponents(), 2u);
+  EXPECT_EQ(orientation.getNumberOfReversed(), both.size());
+  EXPECT_EQ(countOutward(*cloud, both, identity(both.size())), both.size());
+}
+
+TEST(NormalOrientation, BadInputIsRefused)
+{
+  NormalOrientation orientation;
+  pcl::PointCloud<pcl::PointNormal> empty;
+  EXPECT_FALSE(orientation.orient(empty));
+  auto cloud = sphereCloud(50).toPointNormal();
+  (*cloud)[7].normal_y = std::numeric_limits<float>::quiet_NaN();
+  const auto before = *cloud;
+  EXPECT_FALSE(orientation.orient(*cloud));
+  EXPECT_EQ((*cloud)[3].getNormalVector3fMap(), before[3].getNormalVector3fMap());
+  (*cloud)[7].getNormalVector3fMap().setZero();
+  EXPECT_FALSE(orientation.orient(*cloud));
+  // A single point: its normal is turned towards +x.
+  pcl::PointCloud<pcl::PointNormal> one;
+  pcl::PointNormal p;
+  p.getVector3fMap() = Eigen::Vector3f(1, 2, 3);
+  p.getNormalVector3fMap() = Eigen::Vector3f(-1, 0, 0);
+  one.push_back(p);
+  ASSERT_TRUE(orientation.orient(one));
+  EXPECT_EQ(one[0].normal_x, 1.0f);
+}
+
+TEST(CloudPreprocessing, EstimatedNormalsOfAnXyzTorusAndDumbbellPointOutward)
+{
+  for (const SampledCloud& shape : {torusCloud(8000, 3), dumbbellCloud(8000, 4)}) {
+    auto cloud = shape.toPointNormal();
+    for (auto& p : *cloud)
+      p.normal_x = p.normal_y = p.normal_z = std::numeric_limits<float>::quiet_NaN();
+    CloudPreprocessing pre;
+    pre.setInputCloud(cloud);
+    pre.setUseInputNormalsFlag(false);
+    pcl::PointCloud<pcl::PointNormal> working;
+    ASSERT_TRUE(pre.compute(working));
+    EXPECT_TRUE(pre.getNormalsEstimated());
+    ASSERT_EQ(working.size(), shape.size());
+    EXPECT_EQ(countOutward(working, shape, pre.getWorkingIndices()), shape.size());
+  }
+}
+
+TEST(CloudPreprocessing, ResamplesDropsNonFiniteAndDuplicatesAndIsThreadIndependent)
+{
+  const SampledCloud shape = torusCloud(30000, 8);
+  auto cloud = shape.toPointNormal();
+  (*cloud)[5].x = std::numeric_limits<float>::quiet_NaN();
+  (*cloud)[6].z = std::numeric_limits<float>::infinity();
+  CloudPreprocessing pre;
+  pre.setInputCloud(cloud);
+  pre.setWorkingSize(5000);
+  pre.setUseInputNormalsFlag(false);
+  pre.setNumberOfThreads(1);
+  pcl::PointCloud<pcl::PointNormal> one, two;
+  ASSERT_TRUE(pre.compute(one));
+  const std::vector<int> indices = pre.getWorkingIndices();
+  EXPECT_NEAR(double(one.size()), 5000.0, 500.0);
+  for (int i : indices)
+    EXPECT_TRUE(i != 5 && i != 6);
+  EXPECT_EQ(countOutward(one, shape, indices), one.size());
+  pre.setNumberOfThreads(2);
+  ASSERT_TRUE(pre.compute(two));
+  ASSERT_EQ(two.size(), one.size());
+  EXPECT_EQ(pre.getWorkingIndices(), indices);
+  for (std::size_t i = 0; i < one.size(); ++i)
+    ASSERT_EQ(one[i].getNormalVector3fMap(), two[i].getNormalVector3fMap());
+
+  // Exact duplicates collapse onto the first copy; input normals are kept (normalised).
+  auto doubled = sphereCloud(400, 2).toPointNormal();
+  const std::size_t n = doubled->size();
+  for (std::size_t i = 0; i < n; ++i) {
+    auto p = (*doubled)[i];
+    p.getNormalVector3fMap() *= 3.0f;
+    doubled->push_back(p);
+  }
+  pre.setInputCloud(doubled);
+  pre.setUseInputNormalsFlag(true);
+  pcl::PointCloud<pcl::PointNormal> dedup;
+  ASSERT_TRUE(pre.compute(dedup));
+  EXPECT_FALSE(pre.getNormalsEstimated());
+  EXPECT_EQ(dedup.size(), n);
+  for (std::size_t i = 0; i < dedup.size(); ++i) {
+    EXPECT_LT(pre.getWorkingIndices()[i], int(n));
+    EXPECT_NEAR(dedup[i].getNormalVector3fMap().norm(), 1.0f, 1e-6f);
+  }
+}
+
+TEST(CloudPreprocessing, DegenerateInputsFailCleanly)
+{
+  CloudPreprocessing pre;
+  pcl::PointCloud<pcl::PointNormal> working;
+  EXPECT_FALSE(pre.compute(working)); // no input
+  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointNormal>>();
+  pre.setInputCloud(cloud);
+  EXPECT_FALSE(pre.compute(working)); // empty
+  pcl::PointNormal nan_point;
+  nan_point.x = nan_point.y = nan_point.z = std::numeric_limits<float>::quiet_NaN();
+  cloud->resize(100, nan_point);
+  EXPECT_FALSE(pre.compute(working)); // all NaN
+  // Two distinct positions, repeated: too few for a normal.
+  cloud->clear();
+  pcl::PointNormal p;
+  p.getNormalVector3fMap() = Eigen::Vector3f::UnitZ();
+  for (int i = 0; i < 10; ++i) {
+    p.getVector3fMap() = Eigen::Vector3f(float(i % 2), 0, 0);
+    cloud->push_back(p);
+  }
+  EXPECT_FALSE(pre.compute(working));
+  EXPECT_TRUE(working.empty());
+  // Collinear points: PCA normals exist (any direction across the line); no crash.
+  cloud->clear();
+  for (int i = 0; i < 10; ++i) {
+    p.getVector3fMap() = Eigen::Vector3f(float(i), 0, 0);
+    cloud->push_back(p);
+  }
+  pre.setUseInputNormalsFlag(false);
+  pre.compute(working);
+  SUCCEED();
+}

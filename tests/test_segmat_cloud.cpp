@@ -1,0 +1,114 @@
+// The segmat_cloud command-line program: outputs, JSON, exit codes and messages.
+#include "util/cloud_sampler.h"
+
+#include <segmat/io/cloud.h>
+#include <segmat/io/seg.h>
+
+#include <util/run_program.h>
+#include <util/temp_files.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+#include <gtest/gtest.h>
+#include <pcl/io/pcd_io.h>
+
+#include <limits>
+#include <sstream>
+#include <string>
+
+using namespace segmat;
+
+namespace {
+
+/// A dumbbell of 8000 points with normals and two NaN points (3 and 5000), as a binary PCD.
+std::string
+writeDumbbellPcd(const std::string& name)
+{
+  auto cloud = test::dumbbellCloud(8000, 3).toPointNormal();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  (*cloud)[3].x = nan;
+  (*cloud)[5000].y = nan;
+  cloud->is_dense = false;
+  const std::string path = test::scratchDir() + name;
+  EXPECT_EQ(pcl::io::savePCDFileBinary(path, *cloud), 0);
+  return path;
+}
+
+} // namespace
+
+TEST(SegmatCloud, WritesPcdPlyLabelsAndPrintsJson)
+{
+  const std::string input = writeDumbbellPcd("dumbbell.pcd");
+  const std::string prefix = test::scratchDir() + "dumbbell_cli";
+  const test::ProgramRun run = test::runProgram("segmat_cloud", input + " -o " + prefix + " --json");
+  ASSERT_EQ(run.status, 0) << run.err;
+  for (const char* ext : {".pcd", ".ply", ".labels"})
+    ASSERT_TRUE(test::fileExists(prefix + ext)) << ext;
+
+  // One label per input point, in input order; -1 for the two NaN points.
+  const std::vector<int> labels = io::loadSeg(prefix + ".labels", 8000);
+  EXPECT_EQ(labels[3], -1);
+  EXPECT_EQ(labels[5000], -1);
+  EXPECT_EQ(std::count(labels.begin(), labels.end(), -1), 2);
+  // The labelled PCD carries the same labels.
+  const io::LoadedCloud labelled = io::loadCloud(prefix + ".pcd");
+  EXPECT_EQ(labelled.cloud->size(), 8000u);
+  EXPECT_EQ(test::readWholeFile(prefix + ".ply").rfind("ply", 0), 0u);
+
+  std::istringstream in(run.out);
+  boost::property_tree::ptree json;
+  boost::property_tree::read_json(in, json);
+  EXPECT_EQ(json.get<int>("parts"), 3);
+  std::size_t total = 0, n = 0;
+  for (const auto& c : json.get_child("point_counts")) {
+    total += c.second.get_value<std::size_t>();
+    ++n;
+  }
+  EXPECT_EQ(n, 3u);
+  EXPECT_EQ(total, 7998u);
+  for (const char* stage : {"load", "preprocessing", "medial", "graph", "grow_merge", "transfer",
+                            "labels", "write"})
+    EXPECT_GE(json.get<double>(std::string("seconds.") + stage), 0.0) << stage;
+
+  // Plain output, and the same labels again (deterministic), also with estimated normals.
+  const test::ProgramRun plain =
+      test::runProgram("segmat_cloud", input + " -o " + prefix + "_plain --threads 1");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_NE(plain.out.find("parts: 3"), std::string::npos) << plain.out;
+  EXPECT_EQ(io::loadSeg(prefix + "_plain.labels"), labels);
+  const test::ProgramRun estimated =
+      test::runProgram("segmat_cloud", input + " -o " + prefix + "_est --estimate-normals");
+  ASSERT_EQ(estimated.status, 0) << estimated.err;
+  EXPECT_NE(estimated.out.find("parts: 3"), std::string::npos) << estimated.out;
+}
+
+TEST(SegmatCloud, BadArgumentsAndFilesFailWithAMessage)
+{
+  const std::string prefix = test::scratchDir() + "bad_cli";
+  test::ProgramRun run = test::runProgram("segmat_cloud", "");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("usage"), std::string::npos);
+  run = test::runProgram("segmat_cloud", "x.pcd -o " + prefix + " -g abc");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("-g"), std::string::npos) << run.err;
+  run = test::runProgram("segmat_cloud", "x.pcd -o " + prefix + " -k 0");
+  EXPECT_EQ(run.status, 2);
+  run = test::runProgram("segmat_cloud", "x.pcd -o " + prefix + " --frobnicate");
+  EXPECT_EQ(run.status, 2);
+  // A missing file, an empty cloud, an all-NaN cloud: exit 1, nothing written.
+  run = test::runProgram("segmat_cloud", test::scratchDir() + "missing.pcd -o " + prefix);
+  EXPECT_EQ(run.status, 1);
+  EXPECT_NE(run.err.find("missing.pcd"), std::string::npos) << run.err;
+  const std::string empty = test::writeScratchFile("empty.xyz", "# nothing\n");
+  run = test::runProgram("segmat_cloud", empty + " -o " + prefix);
+  EXPECT_EQ(run.status, 1) << run.err;
+  pcl::PointCloud<pcl::PointXYZ> nans;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  nans.resize(10, pcl::PointXYZ(nan, nan, nan));
+  nans.is_dense = false;
+  const std::string nan_path = test::scratchDir() + "nans.pcd";
+  ASSERT_EQ(pcl::io::savePCDFileBinary(nan_path, nans), 0);
+  run = test::runProgram("segmat_cloud", nan_path + " -o " + prefix);
+  EXPECT_EQ(run.status, 1) << run.err;
+  EXPECT_FALSE(test::fileExists(prefix + ".labels"));
+}
