@@ -6,7 +6,6 @@
 #include <segmat/medial/medial_point_graph.h>
 #include <segmat/segmentation/cloud_segmentation.h>
 #include <segmat/segmentation/impl/cloud_segmentation.hpp>
-#include <segmat/segmentation/patch_merging.h>
 
 #include <pcl/console/print.h>
 
@@ -17,81 +16,6 @@
 
 namespace segmat {
 namespace detail {
-namespace {
-
-/** Merging of parts that a graph edge joins (SEG-MAT's three rounds, reference-facts §3.9).
- *
- * Workaround for a gap of MatRegionGrowing on point graphs: it treats two patches as adjacent
- * when they share a sphere, and point nodes (one sphere each) never share one, so it never
- * merges a cloud's parts. This runs the same rounds with the grower's public pieces
- * (radiusHistogram, maxPairwiseEmd, mergeRoundGroups, the same seed) and lets every graph edge
- * between two patches count as a shared sphere: the edge gets a sphere of its own (a copy of
- * its lower endpoint's), listed in both patches. The histograms use the patches' own spheres
- * only. To be dropped once the grower knows graph adjacency (then setMergeRounds(3) again).
- */
-void
-mergeGraphAdjacentParts(const MatGraph& g, const SegmentVisibility& visibility,
-                        std::uint32_t seed, std::vector<std::vector<int>>& dense,
-                        std::vector<std::vector<int>>& coarse)
-{
-  const RadiusBinning binning = makeRadiusBinning(g.radii());
-  const int n = static_cast<int>(g.numNodes());
-  double emd_max = 0.0;
-  const std::vector<MergeRound>& rounds = defaultMergeRounds();
-  for (int round = 0; round < static_cast<int>(rounds.size()) && dense.size() > 1; ++round) {
-    const int patches = static_cast<int>(dense.size());
-    std::vector<int> owner(n, -1);
-    for (int p = 0; p < patches; ++p)
-      for (int i : dense[p])
-        owner[i] = p;
-    std::vector<Eigen::Vector3d> centers = g.centers();
-    std::vector<double> radii = g.radii();
-    std::vector<std::vector<int>> spheres(patches), own(patches);
-    for (int p = 0; p < patches; ++p) {
-      for (int i : dense[p])
-        own[p].push_back(g.node(i).v[0]);
-      std::sort(own[p].begin(), own[p].end());
-      own[p].erase(std::unique(own[p].begin(), own[p].end()), own[p].end());
-      spheres[p] = own[p];
-    }
-    for (int i = 0; i < n; ++i)
-      for (const int* j = g.neighboursBegin(i); j != g.neighboursEnd(i); ++j)
-        if (*j > i && owner[i] >= 0 && owner[*j] >= 0 && owner[i] != owner[*j]) {
-          const int edge_sphere = static_cast<int>(centers.size());
-          centers.push_back(g.centers()[g.node(i).v[0]]);
-          radii.push_back(g.radii()[g.node(i).v[0]]);
-          spheres[owner[i]].push_back(edge_sphere);
-          spheres[owner[*j]].push_back(edge_sphere);
-        }
-    std::vector<std::vector<double>> histograms(patches);
-    for (int p = 0; p < patches; ++p) {
-      std::sort(spheres[p].begin(), spheres[p].end());
-      histograms[p] = radiusHistogram(own[p], g.radii(), binning);
-    }
-    if (round == 0)
-      emd_max = maxPairwiseEmd(histograms, binning.spacing);
-    const std::vector<int> group =
-        mergeRoundGroups(spheres, histograms, binning.spacing, centers, radii,
-                         rounds[round].emd_factor * emd_max, rounds[round].visibility_ratio,
-                         visibility, seed, round);
-    const int groups = *std::max_element(group.begin(), group.end()) + 1;
-    std::vector<std::vector<int>> merged_dense(groups), merged_coarse(groups);
-    for (int p = 0; p < patches; ++p) {
-      merged_dense[group[p]].insert(merged_dense[group[p]].end(), dense[p].begin(),
-                                    dense[p].end());
-      merged_coarse[group[p]].insert(merged_coarse[group[p]].end(), coarse[p].begin(),
-                                     coarse[p].end());
-    }
-    dense.swap(merged_dense);
-    coarse.swap(merged_coarse);
-  }
-  for (auto* lists : {&dense, &coarse})
-    for (std::vector<int>& list : *lists)
-      std::sort(list.begin(), list.end());
-}
-
-} // namespace
-
 bool
 segmentWorkingCloud(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton,
                     const pcl::PointCloud<pcl::PointNormal>& working, int medial_k,
@@ -124,7 +48,6 @@ segmentWorkingCloud(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton,
 
   grower.setInputGraph(graph);
   grower.setStructureTags(StructureTags()); // no structured MAT for a cloud: all bulky
-  grower.setMergeRounds(0);                 // merged below (mergeGraphAdjacentParts)
   SegmentVisibility see;
   if (visibility)
     see = BallUnionVisibility(graph->centers(), graph->radii());
@@ -134,13 +57,9 @@ segmentWorkingCloud(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton,
     PCL_ERROR("[segmat::CloudSegmentation::segment] Region growing failed.\n");
     return false;
   }
-  std::vector<std::vector<int>> dense(grown.size()), coarse = grower.getCoarseParts();
-  for (std::size_t p = 0; p < grown.size(); ++p)
-    dense[p].assign(grown[p].indices.begin(), grown[p].indices.end());
-  mergeGraphAdjacentParts(*graph, see, grower.getRandomSeed(), dense, coarse);
-  parts.resize(dense.size());
-  for (std::size_t p = 0; p < dense.size(); ++p)
-    parts[p].indices.assign(dense[p].begin(), dense[p].end());
+  // The grower merges parts joined by a graph edge (points never share a sphere).
+  parts = std::move(grown);
+  const std::vector<std::vector<int>>& coarse = grower.getCoarseParts();
   stage_seconds.emplace_back("grow_merge", lap());
 
   // The cut runs on the working cloud: it carries oriented normals (the crease term needs them)

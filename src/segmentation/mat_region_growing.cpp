@@ -177,6 +177,31 @@ absorbTinyPatches(const MatGraph& g, const std::vector<std::vector<int>>& tiny,
                                     tiny[t].end());
 }
 
+/** Patch pairs joined by a MAT-graph edge. On a medial mesh every such pair already shares a
+ * sphere (graph edges join nodes with a common sphere), so this only adds adjacency for medial
+ * points, which have one sphere each: one merging rule then serves meshes and clouds.
+ */
+std::vector<std::pair<int, int>>
+graphEdgePairs(const MatGraph& g, const std::vector<Patch>& patches)
+{
+  if (g.hasPrimitives())
+    return {};
+  std::vector<int> owner(g.numNodes(), -1);
+  for (std::size_t p = 0; p < patches.size(); ++p)
+    for (int i : patches[p].dense)
+      owner[i] = static_cast<int>(p);
+  std::vector<std::pair<int, int>> pairs;
+  for (int i = 0; i < static_cast<int>(g.numNodes()); ++i)
+    for (const int* j = g.neighboursBegin(i); j != g.neighboursEnd(i); ++j) {
+      const int a = owner[i], b = owner[*j];
+      if (a >= 0 && b >= 0 && a < b)
+        pairs.emplace_back(a, b);
+    }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
 /** Merging rounds (MergeIterations, reference-facts §3.9). EMD_max is taken once, over all pairs
  * of the patches entering round 1, as in the reference. A merged patch takes the place of its
  * lowest member and concatenates the members' nodes in patch order.
@@ -199,7 +224,7 @@ mergePatches(const MatGraph& g, const RadiusBinning& binning, int rounds,
     const std::vector<int> group =
         mergeRoundGroups(spheres, hist, binning.spacing, g.centers(), g.radii(),
                          settings.emd_factor * emd_max, settings.visibility_ratio, visibility,
-                         seed, round);
+                         seed, round, graphEdgePairs(g, patches));
     std::vector<Patch> merged(*std::max_element(group.begin(), group.end()) + 1);
     for (std::size_t p = 0; p < patches.size(); ++p) {
       Patch& into = merged[group[p]];

@@ -166,14 +166,21 @@ mergeRoundGroups(const std::vector<std::vector<int>>& patch_spheres,
                  const std::vector<std::vector<double>>& histograms, double spacing,
                  const std::vector<Eigen::Vector3d>& centers, const std::vector<double>& radii,
                  double emd_limit, double visibility_ratio, const SegmentVisibility& visible,
-                 std::uint32_t seed, int round)
+                 std::uint32_t seed, int round,
+                 const std::vector<std::pair<int, int>>& extra_pairs)
 {
   const int n = static_cast<int>(patch_spheres.size());
   std::vector<int> rank(n, 0), parent(n);
   for (int i = 0; i < n; ++i)
     parent[i] = i;
   boost::disjoint_sets<int*, int*> sets(rank.data(), parent.data());
-  for (const auto& [a, b] : sphereSharingPairs(patch_spheres, centers.size())) {
+  std::vector<std::pair<int, int>> pairs = sphereSharingPairs(patch_spheres, centers.size());
+  if (!extra_pairs.empty()) {
+    pairs.insert(pairs.end(), extra_pairs.begin(), extra_pairs.end());
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  }
+  for (const auto& [a, b] : pairs) {
     // Cheap test first: the visibility test costs up to (|a|/3)·(|b|/3) segment queries.
     if (!(histogramEmd(histograms[a], histograms[b], spacing) < emd_limit))
       continue;

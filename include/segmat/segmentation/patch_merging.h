@@ -96,7 +96,7 @@ defaultMergeRounds();
 
 /** \brief One merging round: which patches join.
  *
- * Two patches join when they share a sphere, EMD < emd_limit and (when \a visible is set) they
+ * Two patches join when they are adjacent (share a sphere, or appear in \a extra_pairs), EMD < emd_limit and (when \a visible is set) they
  * see each other with the round's ratio. The visibility test is evaluated once per unordered
  * pair, so the relation is symmetric (the reference tested both directions with fresh random
  * samples and could keep only one). Groups are the connected components.
@@ -106,6 +106,8 @@ defaultMergeRounds();
  * \param[in] emd_limit emd_factor · EMD_max of the round
  * \param[in] seed seeds the visibility sampling (mixed with the round and the patch pair)
  * \param[in] round round number, only mixed into the seed
+ * \param[in] extra_pairs further adjacent patch pairs (first < second), e.g. patches joined by a
+ *            MAT-graph edge: medial points of a cloud have one sphere each and never share one
  * \return the group of each patch; groups are numbered in order of their lowest patch, so group
  *         k's lowest patch comes before group k+1's
  */
@@ -114,6 +116,7 @@ mergeRoundGroups(const std::vector<std::vector<int>>& patch_spheres,
                  const std::vector<std::vector<double>>& histograms, double spacing,
                  const std::vector<Eigen::Vector3d>& centers, const std::vector<double>& radii,
                  double emd_limit, double visibility_ratio, const SegmentVisibility& visible,
-                 std::uint32_t seed, int round);
+                 std::uint32_t seed, int round,
+                 const std::vector<std::pair<int, int>>& extra_pairs = {});
 
 } // namespace segmat
