@@ -10,6 +10,8 @@
 #include <segmat/io/colored_ply.h>
 #include <segmat/segmentation/cloud_segmentation.h>
 
+#include "cli_options.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -34,36 +36,12 @@ const char* const kUsage =
     "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"
     "  --json             print one JSON object: parts, point_counts, seconds per stage\n";
 
-double
-parseNumber(const std::string& option, const std::string& text)
-{
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
-    throw segmat::Error("option " + option + ": '" + text + "' is not a number");
-  return value;
-}
 
-int
-parseCount(const std::string& option, const std::string& text, int minimum)
-{
-  const double value = parseNumber(option, text);
-  if (value != std::floor(value) || value < minimum || value > 1e9)
-    throw segmat::Error("option " + option + ": '" + text + "' must be an integer >= " +
-                        std::to_string(minimum));
-  return static_cast<int>(value);
-}
 
-double
-secondsSince(std::chrono::steady_clock::time_point& start)
-{
-  const auto now = std::chrono::steady_clock::now();
-  const double s = std::chrono::duration<double>(now - start).count();
-  start = now;
-  return s;
-}
 
 } // namespace
+
+using namespace segmat::cli;
 
 int
 main(int argc, char** argv)
@@ -98,11 +76,11 @@ main(int argc, char** argv)
         segmentation.setMinRegionFraction(eta);
       }
       else if (arg == "-w")
-        segmentation.setWorkingSize(static_cast<std::size_t>(parseCount(arg, value(), 1)));
+        segmentation.setWorkingSize(static_cast<std::size_t>(parseInteger(arg, value(), 1)));
       else if (arg == "-k")
-        segmentation.setKSearch(parseCount(arg, value(), 1));
+        segmentation.setKSearch(parseInteger(arg, value(), 1));
       else if (arg == "--threads")
-        segmentation.setNumberOfThreads(static_cast<unsigned>(parseCount(arg, value(), 1)));
+        segmentation.setNumberOfThreads(static_cast<unsigned>(parseInteger(arg, value(), 1)));
       else if (arg == "--estimate-normals")
         estimate_normals = true;
       else if (arg == "--no-visibility")

@@ -9,6 +9,8 @@
 #include <segmat/io/mesh.h>
 #include <segmat/medial/medial_mesh_estimation.h>
 
+#include "cli_options.h"
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -31,29 +33,11 @@ const char* const kUsage =
     "  --threads T      threads (default 1; 0 = all); the output does not depend on it\n"
     "  --json           print one JSON object instead of the text report\n";
 
-long
-parseInteger(const std::string& option, const std::string& text, long lowest)
-{
-  char* end = nullptr;
-  const long value = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || end != text.c_str() + text.size() || value < lowest)
-    throw segmat::Error("option " + option + ": '" + text + "' is not an integer >= " +
-                        std::to_string(lowest));
-  return value;
-}
 
-double
-parseNonNegative(const std::string& option, const std::string& text)
-{
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !(value >= 0.0) ||
-      value > 1e300)
-    throw segmat::Error("option " + option + ": '" + text + "' is not a number >= 0");
-  return value;
-}
 
 } // namespace
+
+using namespace segmat::cli;
 
 int
 main(int argc, char** argv)

@@ -12,6 +12,8 @@
 #include <segmat/io/seg.h>
 #include <segmat/segmentation/mesh_segmentation.h>
 
+#include "cli_options.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -36,26 +38,11 @@ const char* const kUsage =
     "  -n ETA          minimal region, fraction of the base MAT's spheres (default 0.002)\n"
     "  --json          print one JSON object: parts, face_counts, seconds per stage\n";
 
-double
-parseNumber(const std::string& option, const std::string& text)
-{
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
-    throw segmat::Error("option " + option + ": '" + text + "' is not a number");
-  return value;
-}
 
-double
-secondsSince(std::chrono::steady_clock::time_point& start)
-{
-  const auto now = std::chrono::steady_clock::now();
-  const double s = std::chrono::duration<double>(now - start).count();
-  start = now;
-  return s;
-}
 
 } // namespace
+
+using namespace segmat::cli;
 
 int
 main(int argc, char** argv)
