@@ -2,6 +2,7 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  */
+#include <segmat/common/checked_setter.h>
 #include <segmat/medial/shrinking_ball_estimation.h>
 
 #include "local_fit.h"
@@ -39,45 +40,29 @@ ShrinkingBallEstimation::ShrinkingBallEstimation()
 void
 ShrinkingBallEstimation::setInitialRadius(float radius)
 {
-  if (!(radius >= 0.0f) || !std::isfinite(radius)) {
-    PCL_WARN("[segmat::ShrinkingBallEstimation::setInitialRadius] The radius must be finite and "
-             ">= 0; keeping %g.\n", initial_radius_);
-    return;
-  }
-  initial_radius_ = radius;
+  detail::assignChecked(initial_radius_, radius, radius >= 0.0f && std::isfinite(radius),
+                        "ShrinkingBallEstimation::setInitialRadius", "finite and >= 0");
 }
 
 void
 ShrinkingBallEstimation::setDenoisePreserveAngle(float angle)
 {
-  if (!(angle >= 0.0f && angle <= kPi)) {
-    PCL_WARN("[segmat::ShrinkingBallEstimation::setDenoisePreserveAngle] The angle must be in "
-             "[0, pi]; keeping %g.\n", preserve_angle_);
-    return;
-  }
-  preserve_angle_ = angle;
+  detail::assignChecked(preserve_angle_, angle, angle >= 0.0f && angle <= kPi,
+                        "ShrinkingBallEstimation::setDenoisePreserveAngle", "in [0, pi]");
 }
 
 void
 ShrinkingBallEstimation::setDenoisePlanarAngle(float angle)
 {
-  if (!(angle >= 0.0f && angle <= kPi)) {
-    PCL_WARN("[segmat::ShrinkingBallEstimation::setDenoisePlanarAngle] The angle must be in "
-             "[0, pi]; keeping %g.\n", planar_angle_);
-    return;
-  }
-  planar_angle_ = angle;
+  detail::assignChecked(planar_angle_, angle, angle >= 0.0f && angle <= kPi,
+                        "ShrinkingBallEstimation::setDenoisePlanarAngle", "in [0, pi]");
 }
 
 void
 ShrinkingBallEstimation::setMaxIterations(int iterations)
 {
-  if (iterations <= 0) {
-    PCL_WARN("[segmat::ShrinkingBallEstimation::setMaxIterations] The cap must be positive; "
-             "keeping %d.\n", max_iterations_);
-    return;
-  }
-  max_iterations_ = iterations;
+  detail::assignChecked(max_iterations_, iterations, iterations > 0,
+                        "ShrinkingBallEstimation::setMaxIterations", "positive");
 }
 
 bool

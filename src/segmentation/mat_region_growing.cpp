@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <segmat/segmentation/growing_cost.h>
+#include <segmat/common/checked_setter.h>
 #include <segmat/segmentation/mat_region_growing.h>
 #include <segmat/segmentation/patch_merging.h>
 
@@ -260,52 +261,40 @@ MatRegionGrowing::setStructureTags(const StructureTags& tags)
   tags_ = tags;
 }
 
-namespace {
-/** Assigns a validated setter argument, or warns and keeps the old value (PCL style). */
-void
-assignChecked(double& field, double value, bool valid, const char* setter, const char* rule)
-{
-  if (!valid) {
-    PCL_WARN("[segmat::MatRegionGrowing::%s] %g is not %s; keeping %g.\n", setter, value, rule,
-             field);
-    return;
-  }
-  field = value;
-}
-} // namespace
-
 void
 MatRegionGrowing::setGrowingThreshold(double delta0)
 {
-  assignChecked(delta0_, delta0, delta0 > 0.0 && std::isfinite(delta0), "setGrowingThreshold",
-                "finite and > 0");
+  detail::assignChecked(delta0_, delta0, delta0 > 0.0 && std::isfinite(delta0),
+                        "MatRegionGrowing::setGrowingThreshold", "finite and > 0");
 }
 
 void
 MatRegionGrowing::setMinRegionFraction(double eta)
 {
-  assignChecked(eta_, eta, eta >= 0.0 && eta <= 1.0, "setMinRegionFraction", "in [0, 1]");
+  detail::assignChecked(eta_, eta, eta >= 0.0 && eta <= 1.0,
+                        "MatRegionGrowing::setMinRegionFraction", "in [0, 1]");
 }
 
 void
 MatRegionGrowing::setAngleWeight(double alpha)
 {
-  assignChecked(alpha_, alpha, alpha >= 0.0 && std::isfinite(alpha), "setAngleWeight",
-                "finite and >= 0");
+  detail::assignChecked(alpha_, alpha, alpha >= 0.0 && std::isfinite(alpha),
+                        "MatRegionGrowing::setAngleWeight", "finite and >= 0");
 }
 
 void
 MatRegionGrowing::setPrimitiveWeight(double lambda)
 {
-  assignChecked(lambda_, lambda, lambda >= 0.0 && std::isfinite(lambda), "setPrimitiveWeight",
-                "finite and >= 0");
+  detail::assignChecked(lambda_, lambda, lambda >= 0.0 && std::isfinite(lambda),
+                        "MatRegionGrowing::setPrimitiveWeight", "finite and >= 0");
 }
 
 void
 MatRegionGrowing::setMaxSeedRadiusRatio(double ratio)
 {
-  assignChecked(max_seed_radius_ratio_, ratio, ratio >= 1.0, "setMaxSeedRadiusRatio",
-                ">= 1 (infinity disables the guard)");
+  detail::assignChecked(max_seed_radius_ratio_, ratio, ratio >= 1.0,
+                        "MatRegionGrowing::setMaxSeedRadiusRatio",
+                        ">= 1 (infinity disables the guard)");
 }
 
 void

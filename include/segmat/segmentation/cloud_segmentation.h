@@ -9,6 +9,7 @@
 #include <segmat/segmentation/label_transfer.h>
 #include <segmat/segmentation/mat_graph.h>
 #include <segmat/segmentation/mat_region_growing.h>
+#include <segmat/segmentation/mat_segmentation_parameters.h>
 
 #include <pcl/PointIndices.h>
 #include <pcl/pcl_base.h>
@@ -104,7 +105,8 @@ labelInputPoints(const std::vector<int>& input_to_working, const std::vector<int
  * points get label -1.
  */
 template <typename PointT>
-class CloudSegmentation : public pcl::PCLBase<PointT>
+class CloudSegmentation : public pcl::PCLBase<PointT>,
+                          public MatSegmentationParameters<CloudLabelTransfer>
 {
 public:
   using Ptr = std::shared_ptr<CloudSegmentation<PointT>>;
@@ -116,77 +118,6 @@ public:
    */
   CloudSegmentation();
 
-  /** \brief δ0, the growing threshold (default 0.015). */
-  void
-  setGrowingThreshold(double delta0)
-  {
-    grower_.setGrowingThreshold(delta0);
-  }
-
-  /** \brief δ0. */
-  double
-  getGrowingThreshold() const
-  {
-    return grower_.getGrowingThreshold();
-  }
-
-  /** \brief η, the minimal region size as a fraction of the medial points (default 0.002). */
-  void
-  setMinRegionFraction(double eta)
-  {
-    grower_.setMinRegionFraction(eta);
-  }
-
-  /** \brief η. */
-  double
-  getMinRegionFraction() const
-  {
-    return grower_.getMinRegionFraction();
-  }
-
-  /** \brief α, weight of the angle term of the growing cost (default 0.05). */
-  void
-  setAngleWeight(double alpha)
-  {
-    grower_.setAngleWeight(alpha);
-  }
-
-  /** \brief α. */
-  double
-  getAngleWeight() const
-  {
-    return grower_.getAngleWeight();
-  }
-
-  /** \brief λ, weight of the medial-primitive term (default 1.5; without effect on point
-   * nodes, kept for one parameter set across both paths).
-   */
-  void
-  setPrimitiveWeight(double lambda)
-  {
-    grower_.setPrimitiveWeight(lambda);
-  }
-
-  /** \brief λ. */
-  double
-  getPrimitiveWeight() const
-  {
-    return grower_.getPrimitiveWeight();
-  }
-
-  /** \brief ω, weight of the graph cut's smoothness term (default 0.3). */
-  void
-  setSmoothnessWeight(double omega)
-  {
-    transfer_.setSmoothnessWeight(omega);
-  }
-
-  /** \brief ω. */
-  double
-  getSmoothnessWeight() const
-  {
-    return transfer_.getSmoothnessWeight();
-  }
 
   /** \brief Points kept for the medial step and the graph cut (> 0, default 20000). */
   void
@@ -342,8 +273,6 @@ private:
   fillLabeledCloud(pcl::PointCloud<LabeledT>& cloud) const;
 
   MesoSkeletonEstimation<PointT> skeleton_estimation_;
-  MatRegionGrowing grower_;
-  CloudLabelTransfer transfer_;
   int k_ = 10;
   bool visibility_ = true;
 

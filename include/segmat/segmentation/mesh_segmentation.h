@@ -10,6 +10,7 @@
 #include <segmat/segmentation/label_transfer.h>
 #include <segmat/segmentation/mat_graph.h>
 #include <segmat/segmentation/mat_region_growing.h>
+#include <segmat/segmentation/mat_segmentation_parameters.h>
 #include <segmat/segmentation/structure_tags.h>
 
 #include <pcl/PointIndices.h>
@@ -54,7 +55,7 @@ class MedialMeshEstimation;
  * seg.setStructuredMat(structured); // MedialMesh::ConstPtr
  * \endcode
  */
-class MeshSegmentation
+class MeshSegmentation : public MatSegmentationParameters<MeshLabelTransfer>
 {
 public:
   using Ptr = std::shared_ptr<MeshSegmentation>;
@@ -143,76 +144,6 @@ public:
     return mats_computed_;
   }
 
-  /** \brief δ0, the growing threshold (default 0.015). */
-  void
-  setGrowingThreshold(double delta0)
-  {
-    grower_.setGrowingThreshold(delta0);
-  }
-
-  /** \brief δ0. */
-  double
-  getGrowingThreshold() const
-  {
-    return grower_.getGrowingThreshold();
-  }
-
-  /** \brief η, the minimal region size as a fraction of the base MAT's spheres (default 0.002).
-   */
-  void
-  setMinRegionFraction(double eta)
-  {
-    grower_.setMinRegionFraction(eta);
-  }
-
-  /** \brief η. */
-  double
-  getMinRegionFraction() const
-  {
-    return grower_.getMinRegionFraction();
-  }
-
-  /** \brief α, weight of the angle term of the growing cost (default 0.05). */
-  void
-  setAngleWeight(double alpha)
-  {
-    grower_.setAngleWeight(alpha);
-  }
-
-  /** \brief α. */
-  double
-  getAngleWeight() const
-  {
-    return grower_.getAngleWeight();
-  }
-
-  /** \brief λ, weight of the medial-primitive term of the growing cost (default 1.5). */
-  void
-  setPrimitiveWeight(double lambda)
-  {
-    grower_.setPrimitiveWeight(lambda);
-  }
-
-  /** \brief λ. */
-  double
-  getPrimitiveWeight() const
-  {
-    return grower_.getPrimitiveWeight();
-  }
-
-  /** \brief ω, weight of the graph cut's smoothness term (default 0.3). */
-  void
-  setSmoothnessWeight(double omega)
-  {
-    transfer_.setSmoothnessWeight(omega);
-  }
-
-  /** \brief ω. */
-  double
-  getSmoothnessWeight() const
-  {
-    return transfer_.getSmoothnessWeight();
-  }
 
   /** \brief Segment the mesh.
    * \param[out] face_labels one label per face, dense 0..k−1, numbered by descending part size
@@ -271,8 +202,6 @@ private:
   StructureTags tags_;
   std::shared_ptr<AabbTree> surface_tree_;
 
-  MatRegionGrowing grower_;
-  MeshLabelTransfer transfer_;
 
   std::vector<int> face_labels_;
   std::vector<pcl::PointIndices> mat_parts_;

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <segmat/common/checked_setter.h>
 #include <segmat/medial/meso_skeleton_estimation.h>
 
 #include <pcl/console/print.h>
@@ -51,60 +52,40 @@ template <typename PointT>
 void
 MesoSkeletonEstimation<PointT>::setWorkingSize(std::size_t size)
 {
-  if (size == 0) {
-    PCL_WARN("[segmat::MesoSkeletonEstimation::setWorkingSize] The size must be positive; "
-             "keeping %zu.\n", params_.working_size);
-    return;
-  }
-  params_.working_size = size;
+  detail::assignChecked(params_.working_size, size, size > 0,
+                        "MesoSkeletonEstimation::setWorkingSize", "positive");
 }
 
 template <typename PointT>
 void
 MesoSkeletonEstimation<PointT>::setNormalKSearch(int k)
 {
-  if (k < 3) {
-    PCL_WARN("[segmat::MesoSkeletonEstimation::setNormalKSearch] k must be at least 3; keeping "
-             "%d.\n", params_.normal_k);
-    return;
-  }
-  params_.normal_k = k;
+  detail::assignChecked(params_.normal_k, k, k >= 3,
+                        "MesoSkeletonEstimation::setNormalKSearch", "at least 3");
 }
 
 template <typename PointT>
 void
 MesoSkeletonEstimation<PointT>::setMinSeparationAngle(float angle)
 {
-  if (!(angle >= 0.0f && angle <= 3.14159265f)) {
-    PCL_WARN("[segmat::MesoSkeletonEstimation::setMinSeparationAngle] The angle must be in "
-             "[0, pi]; keeping %g.\n", params_.min_separation_angle);
-    return;
-  }
-  params_.min_separation_angle = angle;
+  detail::assignChecked(params_.min_separation_angle, angle, angle >= 0.0f && angle <= 3.14159265f,
+                        "MesoSkeletonEstimation::setMinSeparationAngle", "in [0, pi]");
 }
 
 template <typename PointT>
 void
 MesoSkeletonEstimation<PointT>::setContractionIterations(int iterations)
 {
-  if (iterations < 0) {
-    PCL_WARN("[segmat::MesoSkeletonEstimation::setContractionIterations] The count must be "
-             ">= 0; keeping %d.\n", params_.contraction_iterations);
-    return;
-  }
-  params_.contraction_iterations = iterations;
+  detail::assignChecked(params_.contraction_iterations, iterations, iterations >= 0,
+                        "MesoSkeletonEstimation::setContractionIterations", ">= 0");
 }
 
 template <typename PointT>
 void
 MesoSkeletonEstimation<PointT>::setTargetSize(std::size_t size)
 {
-  if (size == 0) {
-    PCL_WARN("[segmat::MesoSkeletonEstimation::setTargetSize] The size must be positive; "
-             "keeping %zu.\n", params_.target_size);
-    return;
-  }
-  params_.target_size = size;
+  detail::assignChecked(params_.target_size, size, size > 0,
+                        "MesoSkeletonEstimation::setTargetSize", "positive");
 }
 
 template <typename PointT>

@@ -1,0 +1,97 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+
+#include <segmat/segmentation/mat_region_growing.h>
+
+namespace segmat {
+
+/** \brief The paper's five parameters (SEG-MAT, Lin et al. 2022: δ0, η, α, λ for the grower, ω for
+ * the graph cut), shared by the front classes MeshSegmentation and CloudSegmentation so that both
+ * paths expose one parameter set with one set of defaults.
+ * \tparam TransferT the label transfer (MeshLabelTransfer or CloudLabelTransfer)
+ */
+template <typename TransferT>
+class MatSegmentationParameters
+{
+public:
+  /** \brief δ0, the growing threshold (default 0.015). */
+  void
+  setGrowingThreshold(double delta0)
+  {
+    grower_.setGrowingThreshold(delta0);
+  }
+
+  /** \brief δ0. */
+  double
+  getGrowingThreshold() const
+  {
+    return grower_.getGrowingThreshold();
+  }
+
+  /** \brief η, the minimal region size as a fraction of the medial spheres (default 0.002). */
+  void
+  setMinRegionFraction(double eta)
+  {
+    grower_.setMinRegionFraction(eta);
+  }
+
+  /** \brief η. */
+  double
+  getMinRegionFraction() const
+  {
+    return grower_.getMinRegionFraction();
+  }
+
+  /** \brief α, weight of the angle term of the growing cost (default 0.05). */
+  void
+  setAngleWeight(double alpha)
+  {
+    grower_.setAngleWeight(alpha);
+  }
+
+  /** \brief α. */
+  double
+  getAngleWeight() const
+  {
+    return grower_.getAngleWeight();
+  }
+
+  /** \brief λ, weight of the medial-primitive term (default 1.5; without effect on
+   * medial points, which have no primitives: one parameter set serves both paths).
+   */
+  void
+  setPrimitiveWeight(double lambda)
+  {
+    grower_.setPrimitiveWeight(lambda);
+  }
+
+  /** \brief λ. */
+  double
+  getPrimitiveWeight() const
+  {
+    return grower_.getPrimitiveWeight();
+  }
+
+  /** \brief ω, weight of the graph cut's smoothness term (default 0.3). */
+  void
+  setSmoothnessWeight(double omega)
+  {
+    transfer_.setSmoothnessWeight(omega);
+  }
+
+  /** \brief ω. */
+  double
+  getSmoothnessWeight() const
+  {
+    return transfer_.getSmoothnessWeight();
+  }
+
+protected:
+  MatRegionGrowing grower_; ///< the one region grower of both paths
+  TransferT transfer_;      ///< parts → faces or points
+};
+
+} // namespace segmat
