@@ -9,7 +9,8 @@
  * repository root (the default mesh is data/teddy/teddy.off).
  *
  * Usage: bench_cloud [MESH.off] [--points N] [--estimate-normals] [--threads N] [--repeat R]
- *                    [--working N] [--balls N] [--contraction N]   (meso-skeleton parameters)
+ *                    [--working N] [--samples N] [--meso-skeleton]
+ *                    [--balls N] [--contraction N]   (meso-skeleton parameters)
  */
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"
@@ -35,6 +36,9 @@ main(int argc, char** argv)
   unsigned threads = 1;
   int repeat = 1;
   segmat::MesoSkeletonParameters params;
+  bool meso = false;
+  long samples = -1;
+  bool keep_inside = true;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--points" && i + 1 < argc)
@@ -47,6 +51,12 @@ main(int argc, char** argv)
       estimate = true;
     else if (arg == "--working" && i + 1 < argc)
       params.working_size = std::stoul(argv[++i]);
+    else if (arg == "--samples" && i + 1 < argc)
+      samples = std::stol(argv[++i]);
+    else if (arg == "--no-keep-inside")
+      keep_inside = false;
+    else if (arg == "--meso-skeleton")
+      meso = true;
     else if (arg == "--balls" && i + 1 < argc)
       params.ball_count = std::stoul(argv[++i]);
     else if (arg == "--contraction" && i + 1 < argc)
@@ -55,7 +65,8 @@ main(int argc, char** argv)
       mesh_path = arg;
     else {
       std::cerr << "usage: bench_cloud [MESH.off] [--points N] [--estimate-normals] "
-                   "[--threads N] [--repeat R] [--working N] [--balls N] [--contraction N]\n";
+                   "[--threads N] [--repeat R] [--working N] [--samples N] [--meso-skeleton] "
+                   "[--balls N] [--contraction N]\n";
       return 2;
     }
   }
@@ -75,6 +86,12 @@ main(int argc, char** argv)
     seg.setMesoSkeletonParameters(params);
     seg.setUseInputNormalsFlag(!estimate);
     seg.setNumberOfThreads(threads);
+    if (meso)
+      seg.setMedialAxis(segmat::CloudMedialAxis::MesoSkeleton);
+    seg.getMedialMeshEstimation().getMedialMeshEstimation().setKeepCentresInside(keep_inside);
+    if (samples >= 0)
+      seg.getMedialMeshEstimation().getMedialMeshEstimation().setMaxSampleCount(
+          static_cast<std::size_t>(samples));
     std::vector<pcl::PointIndices> parts;
     const auto start = std::chrono::steady_clock::now();
     const std::clock_t cpu_start = std::clock();
@@ -89,9 +106,20 @@ main(int argc, char** argv)
                 ok ? "ok" : "FAILED", parts.size(), cpu, total);
     for (const auto& stage : seg.getStageSeconds())
       std::printf(" %s %.3f", stage.first.c_str(), stage.second);
-    const auto& stats = seg.getMesoSkeletonStatistics();
-    std::printf(" ) working %zu, balls %zu (%.3f s), medial points %zu\n", stats.working_points,
-                stats.balls, stats.seconds_balls, stats.medial_points);
+    if (meso) {
+      const auto& stats = seg.getMesoSkeletonStatistics();
+      std::printf(" ) working %zu, balls %zu (%.3f s), medial points %zu\n",
+                  stats.working_points, stats.balls, stats.seconds_balls, stats.medial_points);
+    }
+    else {
+      const auto& stats = seg.getMedialMeshEstimation().getStatistics();
+      std::printf(" ) samples %zu, initial %zu spheres (sampling %.3f Delaunay %.3f inside %.3f "
+                  "assembly %.3f), Q-MAT %.3f s → base %zu, structured %zu\n",
+                  stats.voronoi.num_samples, stats.initial_spheres,
+                  stats.voronoi.seconds_sampling, stats.voronoi.seconds_delaunay,
+                  stats.voronoi.seconds_inside, stats.voronoi.seconds_assembly,
+                  stats.seconds_simplification, stats.base_spheres, stats.structured_spheres);
+    }
   }
   return 0;
 }

@@ -73,13 +73,35 @@ struct Result
   double seconds = 0;
 };
 
+/// Settings from the command line (defaults: the library's).
+struct Settings
+{
+  bool meso_skeleton = false;
+  long samples = -1;
+  int smoothing = -1;
+  bool keep_inside = true;
+};
+
 Result
-run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int>>& truths)
+run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int>>& truths,
+    const Settings& settings)
 {
   segmat::CloudSegmentation<pcl::PointNormal> seg;
   seg.setInputCloud(sampled.toPointNormal());
   seg.setUseInputNormalsFlag(normals);
   seg.setNumberOfThreads(1);
+  if (settings.meso_skeleton)
+    seg.setMedialAxis(segmat::CloudMedialAxis::MesoSkeleton);
+  if (settings.smoothing >= 0) {
+    segmat::MesoSkeletonParameters params = seg.getMesoSkeletonParameters();
+    params.smoothing_iterations = settings.smoothing;
+    seg.setMesoSkeletonParameters(params);
+  }
+  seg.getMedialMeshEstimation().getMedialMeshEstimation().setKeepCentresInside(
+      settings.keep_inside);
+  if (settings.samples >= 0)
+    seg.getMedialMeshEstimation().getMedialMeshEstimation().setMaxSampleCount(
+        static_cast<std::size_t>(settings.samples));
   std::vector<pcl::PointIndices> parts;
   const auto start = std::chrono::steady_clock::now();
   const bool ok = seg.segment(parts);
@@ -102,6 +124,8 @@ main(int argc, char** argv)
   std::size_t points = 20000;
   bool json = false;
   std::vector<int> only;
+  Settings settings;
+  std::string conditions = "abc";
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--points" && i + 1 < argc)
@@ -113,10 +137,21 @@ main(int argc, char** argv)
     }
     else if (arg == "--json")
       json = true;
+    else if (arg == "--meso-skeleton")
+      settings.meso_skeleton = true;
+    else if (arg == "--samples" && i + 1 < argc)
+      settings.samples = std::stol(argv[++i]);
+    else if (arg == "--no-keep-inside")
+      settings.keep_inside = false;
+    else if (arg == "--smoothing" && i + 1 < argc)
+      settings.smoothing = std::stoi(argv[++i]);
+    else if (arg == "--conditions" && i + 1 < argc)
+      conditions = argv[++i];
     else if (!arg.empty() && arg[0] != '-')
       dir = arg;
     else {
-      std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json]\n";
+      std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json] "
+                   "[--conditions abc] [--meso-skeleton] [--samples N] [--smoothing N] [--no-keep-inside]\n";
       return 2;
     }
   }
@@ -155,8 +190,11 @@ main(int argc, char** argv)
       }
       if (truths.empty())
         continue;
-      const Result r[3] = {run(clean, true, truths), run(clean, false, truths),
-                           run(noisy, false, truths)};
+      // Conditions left out by --conditions score as 0 with 0 parts.
+      auto wanted = [&](char c) { return conditions.find(c) != std::string::npos; };
+      const Result r[3] = {wanted('a') ? run(clean, true, truths, settings) : Result(),
+                           wanted('b') ? run(clean, false, truths, settings) : Result(),
+                           wanted('c') ? run(noisy, false, truths, settings) : Result()};
       const int category = (id - 1) / 20;
       auto& cat = by_category[category];
       cat.resize(3);

@@ -8,6 +8,7 @@
 #include <segmat/common/error.h>
 #include <segmat/io/cloud.h>
 #include <segmat/io/colored_ply.h>
+#include <segmat/io/ma.h>
 #include <segmat/segmentation/cloud_segmentation.h>
 
 #include "cli_options.h"
@@ -33,6 +34,9 @@ const char* const kUsage =
     "  -k K               neighbours of the k-NN graphs (default 10)\n"
     "  --estimate-normals ignore the file's normals and estimate them\n"
     "  --no-visibility    merge parts without the visibility test\n"
+    "  --meso-skeleton    medial axis from shrinking balls (no faces) instead of the default\n"
+    "                     Voronoi medial mesh of the points\n"
+    "  --save-mat         also write PREFIX_base.ma and PREFIX_struct.ma (medial mesh only)\n"
     "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"
     "  --json             print one JSON object: parts, point_counts, seconds per stage\n";
 
@@ -47,7 +51,7 @@ int
 main(int argc, char** argv)
 {
   std::string cloud_path, prefix;
-  bool json = false, estimate_normals = false;
+  bool json = false, estimate_normals = false, save_mat = false;
   segmat::CloudSegmentation<pcl::PointNormal> segmentation;
   try {
     for (int i = 1; i < argc; ++i) {
@@ -85,6 +89,10 @@ main(int argc, char** argv)
         estimate_normals = true;
       else if (arg == "--no-visibility")
         segmentation.setVisibilityFlag(false);
+      else if (arg == "--meso-skeleton")
+        segmentation.setMedialAxis(segmat::CloudMedialAxis::MesoSkeleton);
+      else if (arg == "--save-mat")
+        save_mat = true;
       else if (arg == "--json")
         json = true;
       else if (!arg.empty() && arg[0] == '-')
@@ -121,6 +129,10 @@ main(int argc, char** argv)
     segmat::io::saveLabeledCloudPcd(prefix + ".pcd", labelled);
     segmat::io::saveColoredCloudPly(prefix + ".ply", labelled);
     segmat::io::saveLabels(prefix + ".labels", segmentation.getLabels());
+    if (save_mat && !segmentation.getBaseMat().empty()) {
+      segmat::io::saveMa(prefix + "_base.ma", segmentation.getBaseMat());
+      segmat::io::saveMa(prefix + "_struct.ma", segmentation.getStructuredMat());
+    }
     const double write_seconds = secondsSince(start);
 
     std::vector<std::pair<std::string, double>> seconds{{"load", load_seconds}};

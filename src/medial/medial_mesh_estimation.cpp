@@ -28,8 +28,12 @@ MedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
   }
 
   // One winding-number hierarchy serves VoronoiMat's inside test and Q-MAT's centre test.
-  auto winding_number = std::make_shared<WindingNumber>(*mesh_);
-  winding_number->setAccuracy(voronoi_.getWindingNumberAccuracy());
+  std::shared_ptr<const WindingNumber> winding_number = winding_number_;
+  if (!winding_number) {
+    auto own = std::make_shared<WindingNumber>(*mesh_);
+    own->setAccuracy(voronoi_.getWindingNumberAccuracy());
+    winding_number = std::move(own);
+  }
   voronoi_.setInputMesh(mesh_);
   voronoi_.setWindingNumber(winding_number);
   const bool voronoi_ok = voronoi_.compute(*initial_);

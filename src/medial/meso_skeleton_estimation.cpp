@@ -168,6 +168,31 @@ mergeByVoxel(const std::vector<Eigen::Vector3f>& points, const std::vector<float
 } // namespace
 
 bool
+preprocessCloud(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, bool has_normals,
+                const MesoSkeletonParameters& params, pcl::PointCloud<pcl::PointNormal>& working,
+                std::vector<int>& working_indices, std::vector<int>& input_to_working,
+                MesoSkeletonStatistics& stats)
+{
+  const auto start = std::chrono::steady_clock::now();
+  CloudPreprocessing preprocessing;
+  preprocessing.setInputCloud(cloud);
+  preprocessing.setWorkingSize(params.working_size);
+  preprocessing.setNormalKSearch(params.normal_k);
+  preprocessing.setOrientationKSearch(params.orientation_k);
+  preprocessing.setSmoothingIterations(params.smoothing_iterations);
+  preprocessing.setUseInputNormalsFlag(has_normals);
+  preprocessing.setNumberOfThreads(static_cast<unsigned int>(threadCount(params.threads)));
+  if (!preprocessing.compute(working))
+    return false;
+  working_indices = preprocessing.getWorkingIndices();
+  input_to_working = preprocessing.getInputToWorking();
+  stats.working_points = working.size();
+  stats.normals_estimated = preprocessing.getNormalsEstimated();
+  stats.seconds_preprocessing = secondsSince(start);
+  return true;
+}
+
+bool
 estimateMesoSkeleton(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, bool has_normals,
                      const MesoSkeletonParameters& params, pcl::PointCloud<MedialPoint>& skeleton,
                      pcl::PointCloud<pcl::PointNormal>& working, std::vector<int>& working_indices,
@@ -182,24 +207,11 @@ estimateMesoSkeleton(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, b
   const int threads = threadCount(params.threads);
 
   // 1. Working cloud.
-  auto start = std::chrono::steady_clock::now();
-  CloudPreprocessing preprocessing;
-  preprocessing.setInputCloud(cloud);
-  preprocessing.setWorkingSize(params.working_size);
-  preprocessing.setNormalKSearch(params.normal_k);
-  preprocessing.setOrientationKSearch(params.orientation_k);
-  preprocessing.setSmoothingIterations(params.smoothing_iterations);
-  preprocessing.setUseInputNormalsFlag(has_normals);
-  preprocessing.setNumberOfThreads(static_cast<unsigned int>(threads));
-  pcl::PointCloud<pcl::PointNormal>::Ptr surface(new pcl::PointCloud<pcl::PointNormal>);
-  if (!preprocessing.compute(*surface))
+  if (!preprocessCloud(cloud, has_normals, params, working, working_indices, input_to_working,
+                       stats))
     return false;
-  working_indices = preprocessing.getWorkingIndices();
-  input_to_working = preprocessing.getInputToWorking();
-  working = *surface;
-  stats.working_points = surface->size();
-  stats.normals_estimated = preprocessing.getNormalsEstimated();
-  stats.seconds_preprocessing = secondsSince(start);
+  pcl::PointCloud<pcl::PointNormal>::Ptr surface(new pcl::PointCloud<pcl::PointNormal>(working));
+  auto start = std::chrono::steady_clock::now();
 
   // 2. Shrinking balls.
   start = std::chrono::steady_clock::now();

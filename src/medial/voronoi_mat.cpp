@@ -242,7 +242,14 @@ bool
 VoronoiMat::sample(const TriangleMesh& mesh, double diagonal)
 {
   const double spacing = max_spacing_ > 0.0 ? max_spacing_ * diagonal : 0.0;
-  const std::vector<Eigen::Vector3d> candidates = sampleSurface(mesh, spacing);
+  std::vector<Eigen::Vector3d> candidates;
+  if (surface_samples_) {
+    for (const Eigen::Vector3d& p : *surface_samples_)
+      if (p.allFinite())
+        candidates.push_back(p);
+  }
+  else
+    candidates = sampleSurface(mesh, spacing);
   const std::vector<int> representative = weldPoints(candidates, 1e-9 * diagonal);
   samples_.clear();
   samples_.reserve(candidates.size());

@@ -3,9 +3,11 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <segmat/medial/ball_union_visibility.h>
+#include <segmat/medial/cloud_medial_mesh_estimation.h>
 #include <segmat/medial/medial_point_graph.h>
 #include <segmat/segmentation/cloud_segmentation.h>
 #include <segmat/segmentation/impl/cloud_segmentation.hpp>
+#include <segmat/segmentation/structure_tags.h>
 
 #include <pcl/console/print.h>
 
@@ -17,10 +19,50 @@
 namespace segmat {
 namespace detail {
 bool
-segmentWorkingCloud(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton,
-                    const pcl::PointCloud<pcl::PointNormal>& working, int medial_k,
-                    int transfer_k, bool visibility, MatRegionGrowing& grower,
-                    CloudLabelTransfer& transfer, MatGraph::Ptr& graph,
+medialPointGraph(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton, int k, MatGraph::Ptr& graph)
+{
+  MedialPointGraph builder;
+  builder.setInputCloud(skeleton);
+  builder.setKSearch(k);
+  graph = std::make_shared<MatGraph>();
+  if (!builder.compute(*graph)) {
+    PCL_ERROR("[segmat::CloudSegmentation::segment] The MAT graph could not be built.\n");
+    return false;
+  }
+  return true;
+}
+
+bool
+medialMeshGraph(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& working,
+                CloudMedialMeshEstimation& estimation, MedialMesh& base, MedialMesh& structured,
+                MatGraph::Ptr& graph, StructureTags& tags,
+                std::vector<std::pair<std::string, double>>& stage_seconds)
+{
+  auto start = std::chrono::steady_clock::now();
+  estimation.setInputCloud(working);
+  const bool ok = estimation.compute(base, structured);
+  estimation.setInputCloud(nullptr);
+  if (!ok || base.empty())
+    return false;
+  auto now = std::chrono::steady_clock::now();
+  stage_seconds.emplace_back("medial", std::chrono::duration<double>(now - start).count());
+  start = now;
+  graph = std::make_shared<MatGraph>(MatGraph::fromMedialMesh(base));
+  if (graph->empty()) {
+    PCL_ERROR("[segmat::CloudSegmentation::segment] The base medial mesh has no triangle and no "
+              "edge.\n");
+    return false;
+  }
+  tags = structured.empty() ? StructureTags() : computeStructureTags(structured, *graph);
+  now = std::chrono::steady_clock::now();
+  stage_seconds.emplace_back("graph", std::chrono::duration<double>(now - start).count());
+  return true;
+}
+
+bool
+segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
+                    const pcl::PointCloud<pcl::PointNormal>& working, int transfer_k,
+                    bool visibility, MatRegionGrowing& grower, CloudLabelTransfer& transfer,
                     std::vector<int>& working_labels, std::vector<int>& label_parts,
                     std::vector<pcl::PointIndices>& parts,
                     std::vector<std::pair<std::string, double>>& stage_seconds)
@@ -36,18 +78,8 @@ segmentWorkingCloud(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton,
     return seconds;
   };
 
-  MedialPointGraph builder;
-  builder.setInputCloud(skeleton);
-  builder.setKSearch(medial_k);
-  graph = std::make_shared<MatGraph>();
-  if (!builder.compute(*graph)) {
-    PCL_ERROR("[segmat::CloudSegmentation::segment] The MAT graph could not be built.\n");
-    return false;
-  }
-  stage_seconds.emplace_back("graph", lap());
-
   grower.setInputGraph(graph);
-  grower.setStructureTags(StructureTags()); // no structured MAT for a cloud: all bulky
+  grower.setStructureTags(tags);
   SegmentVisibility see;
   if (visibility)
     see = BallUnionVisibility(graph->centers(), graph->radii());
@@ -57,7 +89,8 @@ segmentWorkingCloud(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton,
     PCL_ERROR("[segmat::CloudSegmentation::segment] Region growing failed.\n");
     return false;
   }
-  // The grower merges parts joined by a graph edge (points never share a sphere).
+  // The grower merges parts joined by a shared sphere or a graph edge (points never share a
+  // sphere).
   parts = std::move(grown);
   const std::vector<std::vector<int>>& coarse = grower.getCoarseParts();
   stage_seconds.emplace_back("grow_merge", lap());

@@ -81,6 +81,24 @@ public:
   /** \brief Sample jitter relative to the diagonal. */
   double getJitter() const { return voronoi_.getJitter(); }
 
+  /** \brief Surface samples to use instead of sampling the mesh (VoronoiMat::setSurfaceSamples;
+   * null, the default, samples the mesh). */
+  void
+  setSurfaceSamples(std::shared_ptr<const std::vector<Eigen::Vector3d>> samples)
+  {
+    voronoi_.setSurfaceSamples(std::move(samples));
+  }
+
+  /** \brief Winding-number hierarchy of the input mesh for the inside tests, instead of the one
+   * compute() builds with orientation repair (null, the default). A splat surface, whose faces
+   * are already oriented and share no edge, needs one built without the repair.
+   * \param[in] winding_number the hierarchy, or null */
+  void
+  setWindingNumber(std::shared_ptr<const WindingNumber> winding_number)
+  {
+    winding_number_ = std::move(winding_number);
+  }
+
   /** \brief Keep every merged sphere centre inside the surface (default true; see
    * QmatSimplification::setInputSurface). Costs one O(log F) face-crossing count per collapse,
    * about 0.05–0.1 s on a 30k-face shape; without it a few centres of thin parts (9 of 76,000
@@ -112,6 +130,7 @@ public:
 
 private:
   TriangleMesh::ConstPtr mesh_;
+  std::shared_ptr<const WindingNumber> winding_number_; ///< given hierarchy, or null
   VoronoiMat voronoi_;
   int simplification_base_target_ = 2000;
   int simplification_structured_target_ = -1;

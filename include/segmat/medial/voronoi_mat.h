@@ -115,6 +115,24 @@ public:
     return max_spacing_;
   }
 
+  /** \brief Surface samples to use instead of sampling the input mesh (e.g. the points of a
+   * cloud whose mesh is only a splat surface for the inside test; see CloudMedialMeshEstimation).
+   * They are deduplicated, thinned to the sample limit and jittered like mesh samples; the mesh
+   * then only serves the inside test and the bounding box. Null (the default) samples the mesh.
+   * \param[in] samples the points, or null */
+  void
+  setSurfaceSamples(std::shared_ptr<const std::vector<Eigen::Vector3d>> samples)
+  {
+    surface_samples_ = std::move(samples);
+  }
+
+  /** \brief The surface samples given with setSurfaceSamples() (null: the mesh is sampled). */
+  const std::shared_ptr<const std::vector<Eigen::Vector3d>>&
+  getSurfaceSamples() const
+  {
+    return surface_samples_;
+  }
+
   /** \brief Largest number of surface samples (default 12000; 0: no limit). Denser samplings
    * are thinned by greedy Poisson-disk elimination (thinPointsToCount()), mesh vertices having
    * priority over fill points: sparse regions keep every sample, only the densest are thinned.
@@ -248,6 +266,7 @@ private:
 
   TriangleMesh::ConstPtr mesh_;
   std::shared_ptr<const WindingNumber> winding_number_; ///< shared hierarchy, or null
+  std::shared_ptr<const std::vector<Eigen::Vector3d>> surface_samples_; ///< given samples, or null
   double max_spacing_;
   std::size_t max_samples_;
   double jitter_;

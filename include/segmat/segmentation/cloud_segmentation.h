@@ -5,11 +5,14 @@
 #pragma once
 
 #include <segmat/common/point_types.h>
+#include <segmat/geometry/medial_mesh.h>
+#include <segmat/medial/cloud_medial_mesh_estimation.h>
 #include <segmat/medial/meso_skeleton_estimation.h>
 #include <segmat/segmentation/label_transfer.h>
 #include <segmat/segmentation/mat_graph.h>
 #include <segmat/segmentation/mat_region_growing.h>
 #include <segmat/segmentation/mat_segmentation_parameters.h>
+#include <segmat/segmentation/structure_tags.h>
 
 #include <pcl/PointIndices.h>
 #include <pcl/pcl_base.h>
@@ -23,28 +26,52 @@
 
 namespace segmat {
 
+/** \brief The medial axis CloudSegmentation builds for a cloud. */
+enum class CloudMedialAxis
+{
+  /// Voronoi medial mesh of the working points, inside test by the cloud winding number,
+  /// simplified by Q-MAT to a base and a structured MAT (segmat::CloudMedialMeshEstimation):
+  /// the mesh path's representation, slabs and cones included
+  MedialMesh,
+  /// shrinking-ball medial points linked by k-NN (segmat::MesoSkeletonEstimation,
+  /// segmat::MedialPointGraph): no faces, so the grower drops C_mp and no node is thin
+  MesoSkeleton
+};
+
 namespace detail {
 
-/** \brief What CloudSegmentation does once the meso-skeleton exists (untyped core).
- * \param[in] skeleton the medial points (MesoSkeletonEstimation)
- * \param[in] working the working cloud with oriented normals the skeleton came from
- * \param[in] medial_k neighbours of the medial point graph
+/** \brief The MAT graph of a meso-skeleton: segmat::MedialPointGraph with k neighbours.
+ * \return false (PCL_ERROR) when it cannot be built */
+bool
+medialPointGraph(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton, int k, MatGraph::Ptr& graph);
+
+/** \brief The medial mesh of the working cloud and its MAT graph and structure tags (as on
+ * meshes). Appends "medial" and "graph" to \a stage_seconds.
+ * \return false when the estimation fails (it said why) or the base MAT gives no graph node */
+bool
+medialMeshGraph(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& working,
+                CloudMedialMeshEstimation& estimation, MedialMesh& base, MedialMesh& structured,
+                MatGraph::Ptr& graph, StructureTags& tags,
+                std::vector<std::pair<std::string, double>>& stage_seconds);
+
+/** \brief What CloudSegmentation does once the MAT graph exists (untyped core).
+ * \param[in] graph the MAT graph (medial mesh or meso-skeleton)
+ * \param[in] tags its structure tags (empty: every node bulky)
+ * \param[in] working the working cloud with oriented normals the medial axis came from
  * \param[in] transfer_k neighbours of the working cloud's graph in the transfer
  * \param[in] visibility use the ball-union visibility when merging parts
  * \param[in,out] grower the grower, parameters set (its graph and visibility are set here)
  * \param[in,out] transfer the transfer, ω set (its inputs are set here)
- * \param[out] graph the MAT graph
  * \param[out] working_labels one label per working point, in growing order (compacted)
  * \param[out] label_parts for each label, the index of its part in \a parts
  * \param[out] parts the grower's parts (MAT-graph nodes)
- * \param[in,out] stage_seconds "graph", "grow_merge", "transfer" are appended
+ * \param[in,out] stage_seconds "grow_merge", "transfer" are appended
  * \return false (PCL_ERROR) when a stage fails
  */
 bool
-segmentWorkingCloud(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton,
-                    const pcl::PointCloud<pcl::PointNormal>& working, int medial_k,
-                    int transfer_k, bool visibility, MatRegionGrowing& grower,
-                    CloudLabelTransfer& transfer, MatGraph::Ptr& graph,
+segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
+                    const pcl::PointCloud<pcl::PointNormal>& working, int transfer_k,
+                    bool visibility, MatRegionGrowing& grower, CloudLabelTransfer& transfer,
                     std::vector<int>& working_labels, std::vector<int>& label_parts,
                     std::vector<pcl::PointIndices>& parts,
                     std::vector<std::pair<std::string, double>>& stage_seconds);
@@ -180,6 +207,29 @@ public:
   setNumberOfThreads(unsigned int threads)
   {
     skeleton_estimation_.setNumberOfThreads(threads);
+    mesh_estimation_.getMedialMeshEstimation().setNumberOfThreads(threads);
+  }
+
+  /** \brief The medial axis to build (default CloudMedialAxis::MedialMesh). */
+  void
+  setMedialAxis(CloudMedialAxis axis)
+  {
+    medial_axis_ = axis;
+  }
+
+  /** \brief The medial axis built. */
+  CloudMedialAxis
+  getMedialAxis() const
+  {
+    return medial_axis_;
+  }
+
+  /** \brief The medial-mesh estimation (advanced: base/structured targets, sample limit, point
+   * areas; see segmat::CloudMedialMeshEstimation). Used with CloudMedialAxis::MedialMesh. */
+  CloudMedialMeshEstimation&
+  getMedialMeshEstimation()
+  {
+    return mesh_estimation_;
   }
 
   /** \brief Every meso-skeleton parameter (advanced; see segmat::MesoSkeletonParameters). */
@@ -223,11 +273,26 @@ public:
   void
   getLabeledCloud(pcl::PointCloud<pcl::PointXYZRGBL>& cloud) const;
 
-  /** \brief The meso-skeleton of the last segment(): medial points with radii and normals. */
+  /** \brief The meso-skeleton of the last segment(): medial points with radii and normals
+   * (empty with CloudMedialAxis::MedialMesh). */
   pcl::PointCloud<MedialPoint>::ConstPtr
   getMesoSkeleton() const
   {
     return skeleton_;
+  }
+
+  /** \brief The base medial mesh of the last segment() (empty with the meso-skeleton). */
+  const MedialMesh&
+  getBaseMat() const
+  {
+    return base_;
+  }
+
+  /** \brief The structured medial mesh of the last segment() (empty with the meso-skeleton). */
+  const MedialMesh&
+  getStructuredMat() const
+  {
+    return structured_;
   }
 
   /** \brief The MAT graph of the last segment() (null when none was built). */
@@ -273,8 +338,14 @@ private:
   fillLabeledCloud(pcl::PointCloud<LabeledT>& cloud) const;
 
   MesoSkeletonEstimation<PointT> skeleton_estimation_;
+  CloudMedialMeshEstimation mesh_estimation_;
+  CloudMedialAxis medial_axis_ = CloudMedialAxis::MedialMesh;
   int k_ = 10;
   bool visibility_ = true;
+
+  MedialMesh base_, structured_;
+  pcl::PointCloud<pcl::PointNormal>::Ptr working_;
+  std::vector<int> input_to_working_;
 
   pcl::PointCloud<MedialPoint>::Ptr skeleton_;
   MatGraph::Ptr graph_;

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <segmat/medial/impl/meso_skeleton_estimation.hpp>
 #include <segmat/segmentation/cloud_segmentation.h>
 
 #include <pcl/common/colors.h>
@@ -55,15 +56,54 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
     return false;
   }
 
-  skeleton_estimation_.setInputCloud(input_);
-  skeleton_estimation_.setIndices(indices_);
-  const bool skeleton_ok = skeleton_estimation_.compute(*skeleton_);
-  const MesoSkeletonStatistics& stats = skeleton_estimation_.getStatistics();
-  stage_seconds_.emplace_back("preprocessing", stats.seconds_preprocessing);
-  stage_seconds_.emplace_back("medial", stats.seconds_balls + stats.seconds_medial);
+  base_ = MedialMesh();
+  structured_ = MedialMesh();
+  working_.reset(new pcl::PointCloud<pcl::PointNormal>);
+  input_to_working_.clear();
+  MatGraph::Ptr graph;
+  StructureTags tags;
+  bool medial_ok = false;
+  if (medial_axis_ == CloudMedialAxis::MedialMesh) {
+    pcl::PointCloud<pcl::PointNormal>::Ptr cloud(new pcl::PointCloud<pcl::PointNormal>);
+    const MesoSkeletonParameters& params = skeleton_estimation_.getParameters();
+    const bool has_normals = detail::copyToPointNormal(*input_, *indices_, *cloud);
+    std::vector<int> working_indices, copy_to_working;
+    MesoSkeletonStatistics stats;
+    if (detail::preprocessCloud(cloud, has_normals && params.use_input_normals, params,
+                                *working_, working_indices, copy_to_working, stats)) {
+      stage_seconds_.emplace_back("preprocessing", stats.seconds_preprocessing);
+      // Indices into the copy → indices into the input cloud.
+      input_to_working_.assign(input_->size(), -1);
+      for (std::size_t i = 0; i < indices_->size() && i < copy_to_working.size(); ++i)
+        input_to_working_[(*indices_)[i]] = copy_to_working[i];
+      medial_ok = detail::medialMeshGraph(working_, mesh_estimation_, base_, structured_, graph,
+                                          tags, stage_seconds_);
+    }
+  }
+  else {
+    skeleton_estimation_.setInputCloud(input_);
+    skeleton_estimation_.setIndices(indices_);
+    medial_ok = skeleton_estimation_.compute(*skeleton_);
+    const MesoSkeletonStatistics& stats = skeleton_estimation_.getStatistics();
+    stage_seconds_.emplace_back("preprocessing", stats.seconds_preprocessing);
+    stage_seconds_.emplace_back("medial", stats.seconds_balls + stats.seconds_medial);
+    if (medial_ok) {
+      *working_ = skeleton_estimation_.getWorkingCloud();
+      input_to_working_ = skeleton_estimation_.getInputToWorking();
+      const auto start = std::chrono::steady_clock::now();
+      if (!detail::medialPointGraph(skeleton_, k_, graph)) {
+        stage_seconds_.clear();
+        deinitCompute();
+        return false;
+      }
+      stage_seconds_.emplace_back(
+          "graph",
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+  }
 
-  if (!skeleton_ok) {
-    // No medial point: one part when there is anything to label at all.
+  if (!medial_ok) {
+    // No medial axis: one part when there is anything to label at all.
     pcl::PointIndices all;
     for (const auto i : *indices_)
       if (pcl::isXYZFinite((*input_)[i]))
@@ -74,7 +114,7 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
       deinitCompute();
       return false;
     }
-    PCL_WARN("[segmat::CloudSegmentation::segment] No medial point (the cloud encloses no "
+    PCL_WARN("[segmat::CloudSegmentation::segment] No medial axis (the cloud encloses no "
              "volume, or has too few points): one part.\n");
     std::sort(all.indices.begin(), all.indices.end());
     all.indices.erase(std::unique(all.indices.begin(), all.indices.end()), all.indices.end());
@@ -85,12 +125,12 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
     deinitCompute();
     return true;
   }
+  graph_ = graph;
 
   std::vector<int> working_labels, label_parts;
   std::vector<pcl::PointIndices> grown;
-  if (!detail::segmentWorkingCloud(skeleton_, skeleton_estimation_.getWorkingCloud(), k_, k_,
-                                   visibility_, grower_, transfer_, graph_, working_labels,
-                                   label_parts, grown, stage_seconds_)) {
+  if (!detail::segmentWorkingCloud(graph, tags, *working_, k_, visibility_, grower_, transfer_,
+                                   working_labels, label_parts, grown, stage_seconds_)) {
     stage_seconds_.clear();
     deinitCompute();
     return false;
@@ -98,8 +138,7 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<int> rank;
-  detail::labelInputPoints(skeleton_estimation_.getInputToWorking(), working_labels, labels_,
-                           parts, rank);
+  detail::labelInputPoints(input_to_working_, working_labels, labels_, parts, rank);
   mat_parts_.assign(parts.size(), pcl::PointIndices());
   for (std::size_t l = 0; l < rank.size(); ++l)
     if (rank[l] >= 0)

@@ -1,0 +1,124 @@
+// The cloud's medial mesh: splat surface (hand-computed triangle), cloud winding number, and the
+// Voronoi + Q-MAT medial mesh of analytic shapes whose medial axis is known.
+#include "util/cloud_sampler.h"
+
+#include <segmat/geometry/splat_surface.h>
+#include <segmat/geometry/winding_number.h>
+#include <segmat/medial/cloud_medial_mesh_estimation.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace segmat;
+using namespace segmat::test;
+
+TEST(SplatSurface, OneTriangleOfTheGivenAreaAroundThePointFacingTheNormal)
+{
+  const std::vector<Eigen::Vector3d> points = {{1, 2, 3}, {0, 0, 0}, {5, 5, 5}};
+  const std::vector<Eigen::Vector3d> normals = {{0, 0, 2}, {0, 0, 0}, {1, 0, 0}};
+  const std::vector<double> areas = {0.75, 1.0, -1.0}; // 2nd: zero normal, 3rd: no area
+  const TriangleMesh soup = makeSplatSurface(points, normals, areas);
+  ASSERT_EQ(soup.numFaces(), 1u);
+  ASSERT_EQ(soup.numVertices(), 3u);
+  EXPECT_NEAR(soup.faceArea(0), 0.75, 1e-12);
+  EXPECT_TRUE(soup.faceCentroid(0).isApprox(Eigen::Vector3d(1, 2, 3), 1e-12));
+  EXPECT_TRUE(soup.faceNormal(0).isApprox(Eigen::Vector3d(0, 0, 1), 1e-12));
+  // Equilateral: every corner at the circumradius sqrt(4a / (3√3)) = 0.7598... from the point.
+  for (const Eigen::Vector3d& v : soup.vertices)
+    EXPECT_NEAR((v - points[0]).norm(), std::sqrt(4 * 0.75 / (3 * std::sqrt(3.0))), 1e-12);
+}
+
+TEST(SplatSurface, WindingNumberOfASphereCloudIsOneInsideZeroOutside)
+{
+  const SampledCloud sphere = sphereCloud(4000, 7);
+  std::vector<Eigen::Vector3d> points, normals;
+  for (std::size_t i = 0; i < sphere.size(); ++i) {
+    points.push_back(sphere.points[i].cast<double>());
+    normals.push_back(sphere.normals[i].cast<double>());
+  }
+  // Each of 4000 points stands for 4π/4000 of the unit sphere.
+  const std::vector<double> areas(points.size(), 4.0 * M_PI / 4000.0);
+  const WindingNumber w(makeSplatSurface(points, normals, areas), false);
+  EXPECT_NEAR(w(Eigen::Vector3d::Zero()), 1.0, 0.02);
+  EXPECT_NEAR(w(Eigen::Vector3d(0.5, 0.3, -0.2)), 1.0, 0.05);
+  EXPECT_NEAR(w(Eigen::Vector3d(2, 0, 0)), 0.0, 0.02);
+  EXPECT_NEAR(w(Eigen::Vector3d(0, -1.3, 0.4)), 0.0, 0.05);
+  // Flipped normals: the inside counts −1.
+  for (Eigen::Vector3d& n : normals)
+    n = -n;
+  const WindingNumber flipped(makeSplatSurface(points, normals, areas), false);
+  EXPECT_NEAR(flipped(Eigen::Vector3d::Zero()), -1.0, 0.02);
+}
+
+namespace {
+
+/// Base and structured MATs of a cloud with its true normals.
+bool
+cloudMat(const SampledCloud& cloud, MedialMesh& base, MedialMesh& structured)
+{
+  CloudMedialMeshEstimation estimation;
+  estimation.setInputCloud(cloud.toPointNormal());
+  return estimation.compute(base, structured);
+}
+
+double
+medianRadius(const MedialMesh& mat)
+{
+  std::vector<double> r;
+  for (std::size_t v = 0; v < mat.numVertices(); ++v)
+    r.push_back(mat.radii()[v]);
+  std::nth_element(r.begin(), r.begin() + r.size() / 2, r.end());
+  return r[r.size() / 2];
+}
+
+} // namespace
+
+TEST(CloudMedialMeshEstimation, TorusMedialAxisIsItsCoreCircle)
+{
+  // Torus R = 2, r = 0.5: the medial axis is the circle of radius 2 in z = 0, every ball r = 0.5.
+  MedialMesh base, structured;
+  ASSERT_TRUE(cloudMat(torusCloud(12000, 4), base, structured));
+  EXPECT_EQ(base.numVertices(), 2000u);
+  EXPECT_GT(structured.numVertices(), 0u);
+  EXPECT_NEAR(medianRadius(base), 0.5, 0.03);
+  int near_core = 0;
+  for (std::size_t v = 0; v < base.numVertices(); ++v) {
+    const Eigen::Vector3d c = base.centers()[v];
+    if (std::abs(std::hypot(c.x(), c.y()) - 2.0) < 0.1 && std::abs(c.z()) < 0.1)
+      ++near_core;
+  }
+  EXPECT_GE(near_core, int(0.9 * base.numVertices()));
+}
+
+TEST(CloudMedialMeshEstimation, SphereMedialAxisIsItsCentre)
+{
+  MedialMesh base, structured;
+  ASSERT_TRUE(cloudMat(sphereCloud(10000, 3), base, structured));
+  EXPECT_NEAR(medianRadius(base), 1.0, 0.03);
+  for (std::size_t v = 0; v < base.numVertices(); ++v)
+    EXPECT_LT(base.centers()[v].norm() + base.radii()[v], 1.05); // every ball inside the sphere
+}
+
+TEST(CloudMedialMeshEstimation, BadInputFailsCleanly)
+{
+  CloudMedialMeshEstimation estimation;
+  MedialMesh base, structured;
+  EXPECT_FALSE(estimation.compute(base, structured)); // no input
+  pcl::PointCloud<pcl::PointNormal>::Ptr cloud(new pcl::PointCloud<pcl::PointNormal>);
+  estimation.setInputCloud(cloud);
+  EXPECT_FALSE(estimation.compute(base, structured)); // empty
+  pcl::PointNormal p;
+  p.x = p.y = p.z = 0.0f;
+  p.normal_x = std::nanf("");
+  p.normal_y = p.normal_z = 0.0f;
+  cloud->resize(10, p);
+  EXPECT_FALSE(estimation.compute(base, structured)); // no finite normal
+  // A flat disc encloses nothing: no medial sphere.
+  estimation.setInputCloud(discCloud(2000, 5).toPointNormal());
+  EXPECT_FALSE(estimation.compute(base, structured));
+  EXPECT_TRUE(base.empty());
+  estimation.setAreaKSearch(0); // refused, kept
+  EXPECT_EQ(estimation.getAreaKSearch(), 8);
+}
