@@ -25,7 +25,8 @@ namespace {
 
 const char* const kUsage =
     "usage: segmat_mesh MESH -o PREFIX [-b BASE.ma -s STRUCTURED.ma] [--save-mat] [-g DELTA0]\n"
-    "                   [-n ETA] [--threads T] [--json]\n"
+    "                   [-n ETA] [--seed S] [--reference-crease] [--threads T]\n"
+    "                   [--json]\n"
     "  MESH            closed triangle mesh (.off, .ply, .obj, .stl)\n"
     "  -o PREFIX       writes PREFIX.seg (one label per face, PSB format) and PREFIX.ply\n"
     "                  (faces coloured by part)\n"
@@ -36,6 +37,10 @@ const char* const kUsage =
     "  --threads T     threads of the medial-mesh computation (default 1; 0 = all)\n"
     "  -g DELTA0       growing threshold (default 0.015)\n"
     "  -n ETA          minimal region, fraction of the base MAT's spheres (default 0.002)\n"
+    "  --seed S        seed of the merging's visibility sampling (default 386727)\n"
+    "  --reference-crease  price concave creases in the surface cut as SEG-MAT does\n"
+    "                  (default: a sharp concave crease is much cheaper to cut than a shallow\n"
+    "                  one; see README)\n"
     "  --json          print one JSON object: parts, face_counts, seconds per stage\n";
 
 
@@ -81,6 +86,14 @@ main(int argc, char** argv)
           throw segmat::Error("option -n: the minimal region fraction must be in [0, 1]");
         segmentation.setMinRegionFraction(eta);
       }
+      else if (arg == "--seed") {
+        const double seed = parseNumber(arg, value());
+        if (seed < 0.0 || seed > 4294967295.0 || seed != std::floor(seed))
+          throw segmat::Error("option --seed: give a whole number in [0, 2^32)");
+        segmentation.setRandomSeed(static_cast<unsigned>(seed));
+      }
+      else if (arg == "--reference-crease")
+        segmentation.setCreaseModel(segmat::CreaseModel::Reference);
       else if (arg == "--json")
         json = true;
       else if (arg == "--save-mat")

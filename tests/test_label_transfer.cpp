@@ -199,6 +199,30 @@ TEST(LabelTransferTerms, CreaseCostsByHand)
             90000.0);
 }
 
+TEST(LabelTransferTerms, SharpConcaveCreaseCostsByHand)
+{
+  // CreaseModel::SharpConcave, ω = 0.3: concave θ → 2·⌊0.6·exp(−θ/10°)·1e5⌋; convex and flat as
+  // the reference.
+  const auto sharp = CreaseModel::SharpConcave;
+  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ(), x = Eigen::Vector3d::UnitX();
+  // 90° valley: 0.6·e^−9·1e5 = 7.40 → 2·7 (the reference: 30000).
+  EXPECT_EQ(computeCreaseCost({0, 0, 0}, z, {1, 0, 1}, -x, 0.3, sharp), 14.0);
+  EXPECT_EQ(computeCreaseCost({1, 0, 1}, -x, {0, 0, 0}, z, 0.3, sharp), 14.0);
+  // 10° valley (the +x face tilts its normal towards −x): 0.6·e^−1·1e5 = 22072.77 → 2·22072
+  // (the reference: 2·⌊0.3·170/180·1e5⌋ = 56666).
+  const double t = 10.0 * 3.14159265358979323846 / 180.0;
+  const Eigen::Vector3d tilted(-std::sin(t), 0.0, std::cos(t));
+  EXPECT_EQ(computeCreaseCost({0, 0, 0}, z, {1, 0, 0.1}, tilted, 0.3, sharp), 44144.0);
+  EXPECT_EQ(computeCreaseCost({0, 0, 0}, z, {1, 0, 0.1}, tilted, 0.3), 56666.0);
+  // No jump at θ = 0: a 0.01° valley costs what a flat edge costs, less the round-off of e^−0.001.
+  const double u = 0.01 * 3.14159265358979323846 / 180.0;
+  EXPECT_EQ(computeCreaseCost({0, 0, 0}, z, {1, 0, 0}, Eigen::Vector3d(-std::sin(u), 0.0, std::cos(u)),
+                              0.3, sharp),
+            2.0 * std::floor(60000.0 * std::exp(-0.001)));
+  EXPECT_EQ(computeCreaseCost({0, 0, 0}, z, {1, 0, -1}, x, 0.3, sharp), 90000.0);
+  EXPECT_EQ(computeCreaseCost({0, 0, 0}, z, {1, 0, 0}, z, 0.3, sharp), 120000.0);
+}
+
 TEST(LabelTransferTerms, MeshSmoothnessOnAnLPrism)
 {
   TriangleMesh mesh = lPrism();
@@ -221,6 +245,12 @@ TEST(LabelTransferTerms, MeshSmoothnessOnAnLPrism)
   EXPECT_EQ(concave, 1);
   EXPECT_EQ(convex, 17);
   EXPECT_EQ(flat, 12);
+  // The sharp-concave model changes only the concave edge (90°: 14, see above).
+  const std::vector<PottsEdge> sharp =
+      computeMeshSmoothnessEdges(mesh, 0.3, CreaseModel::SharpConcave);
+  ASSERT_EQ(sharp.size(), edges.size());
+  for (std::size_t k = 0; k < edges.size(); ++k)
+    EXPECT_EQ(sharp[k].weight, edges[k].weight == 30000.0 ? 14.0 : edges[k].weight) << k;
 }
 
 TEST(LabelTransferTerms, PartDistanceCostsMatchBruteForce)

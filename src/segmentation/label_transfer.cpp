@@ -70,7 +70,8 @@ computePartDistanceCosts(const std::vector<Eigen::Vector3d>& positions, const Ma
 
 double
 computeCreaseCost(const Eigen::Vector3d& centre_a, const Eigen::Vector3d& normal_a,
-                  const Eigen::Vector3d& centre_b, const Eigen::Vector3d& normal_b, double omega)
+                  const Eigen::Vector3d& centre_b, const Eigen::Vector3d& normal_b, double omega,
+                  CreaseModel model)
 {
   double cosine = normal_a.dot(normal_b);
   if (!std::isfinite(cosine))
@@ -78,7 +79,9 @@ computeCreaseCost(const Eigen::Vector3d& centre_a, const Eigen::Vector3d& normal
   const double theta = std::acos(std::clamp(cosine, -1.0, 1.0)) * kRadiansToDegrees;
   const Eigen::Vector3d step = centre_b - centre_a;
   const bool concave = step.dot(normal_a - normal_b) > 1e-6 * step.norm(); // NaN → convex
-  const double per_registration = omega * ((concave ? 180.0 : 360.0) - theta) / 180.0;
+  double per_registration = omega * ((concave ? 180.0 : 360.0) - theta) / 180.0;
+  if (concave && model == CreaseModel::SharpConcave) // fixes the θ = 0 jump (§6.2) on purpose
+    per_registration = 2.0 * omega * std::exp(-theta / kConcaveCreaseAngle);
   // Truncated like the reference's int(), with a little slack so that exact angles (flat, 90°)
   // are not pushed one unit down by round-off in acos. The reference registered every adjacency
   // twice, (i, j) and (j, i): the cost counts double.
@@ -86,7 +89,7 @@ computeCreaseCost(const Eigen::Vector3d& centre_a, const Eigen::Vector3d& normal
 }
 
 std::vector<PottsEdge>
-computeMeshSmoothnessEdges(const TriangleMesh& mesh, double omega)
+computeMeshSmoothnessEdges(const TriangleMesh& mesh, double omega, CreaseModel model)
 {
   const std::vector<FaceAdjacency> adjacency = mesh.faceAdjacency();
   const std::vector<int> signs = computeOutwardFaceSigns(mesh, adjacency);
@@ -99,7 +102,8 @@ computeMeshSmoothnessEdges(const TriangleMesh& mesh, double omega)
   std::vector<PottsEdge> edges(adjacency.size());
   for (std::size_t k = 0; k < adjacency.size(); ++k) {
     const int a = adjacency[k].face_a, b = adjacency[k].face_b;
-    edges[k] = {a, b, computeCreaseCost(centroids[a], normals[a], centroids[b], normals[b], omega)};
+    edges[k] = {a, b,
+                computeCreaseCost(centroids[a], normals[a], centroids[b], normals[b], omega, model)};
   }
   return edges;
 }
@@ -244,7 +248,7 @@ MeshLabelTransfer::transfer(std::vector<int>& face_labels)
   }
   // The face graph is only needed when there is something to cut (and then kept for reuse).
   if (parts_.size() > 1 && (!edges_valid_ || edges_omega_ != omega_)) {
-    solver_.setEdges(computeMeshSmoothnessEdges(*mesh_, omega_));
+    solver_.setEdges(computeMeshSmoothnessEdges(*mesh_, omega_, crease_model_));
     edges_valid_ = true;
     edges_omega_ = omega_;
   }

@@ -89,6 +89,22 @@ public:
     return transfer_.getSmoothnessWeight();
   }
 
+  /** \brief Seed of the merging's visibility sampling (default 0x5e6a7; not one of the paper's
+   * parameters: for checking that a result does not hinge on one random draw).
+   */
+  void
+  setRandomSeed(unsigned seed)
+  {
+    grower_.setRandomSeed(seed);
+  }
+
+  /** \brief Seed of the merging's visibility sampling. */
+  unsigned
+  getRandomSeed() const
+  {
+    return grower_.getRandomSeed();
+  }
+
 protected:
   MatRegionGrowing grower_; ///< the one region grower of both paths
   TransferT transfer_;      ///< parts → faces or points
