@@ -38,7 +38,7 @@ main(int argc, char** argv)
   segmat::MesoSkeletonParameters params;
   bool meso = false;
   long samples = -1;
-  bool keep_inside = true;
+  bool keep_inside = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--points" && i + 1 < argc)
@@ -53,8 +53,8 @@ main(int argc, char** argv)
       params.working_size = std::stoul(argv[++i]);
     else if (arg == "--samples" && i + 1 < argc)
       samples = std::stol(argv[++i]);
-    else if (arg == "--no-keep-inside")
-      keep_inside = false;
+    else if (arg == "--keep-inside")
+      keep_inside = true;
     else if (arg == "--meso-skeleton")
       meso = true;
     else if (arg == "--balls" && i + 1 < argc)

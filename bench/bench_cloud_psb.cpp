@@ -79,7 +79,8 @@ struct Settings
   bool meso_skeleton = false;
   long samples = -1;
   int smoothing = -1;
-  bool keep_inside = true;
+  bool keep_inside = false;
+  bool reference_crease = false;
 };
 
 Result
@@ -99,6 +100,8 @@ run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int
   }
   seg.getMedialMeshEstimation().getMedialMeshEstimation().setKeepCentresInside(
       settings.keep_inside);
+  if (settings.reference_crease)
+    seg.setCreaseModel(segmat::CreaseModel::Reference);
   if (settings.samples >= 0)
     seg.getMedialMeshEstimation().getMedialMeshEstimation().setMaxSampleCount(
         static_cast<std::size_t>(settings.samples));
@@ -141,8 +144,10 @@ main(int argc, char** argv)
       settings.meso_skeleton = true;
     else if (arg == "--samples" && i + 1 < argc)
       settings.samples = std::stol(argv[++i]);
-    else if (arg == "--no-keep-inside")
-      settings.keep_inside = false;
+    else if (arg == "--keep-inside")
+      settings.keep_inside = true;
+    else if (arg == "--reference-crease")
+      settings.reference_crease = true;
     else if (arg == "--smoothing" && i + 1 < argc)
       settings.smoothing = std::stoi(argv[++i]);
     else if (arg == "--conditions" && i + 1 < argc)
@@ -151,7 +156,8 @@ main(int argc, char** argv)
       dir = arg;
     else {
       std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json] "
-                   "[--conditions abc] [--meso-skeleton] [--samples N] [--smoothing N] [--no-keep-inside]\n";
+                   "[--conditions abc] [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] "
+                   "[--reference-crease]\n";
       return 2;
     }
   }

@@ -15,7 +15,12 @@
 
 namespace segmat {
 
-CloudMedialMeshEstimation::CloudMedialMeshEstimation() = default;
+CloudMedialMeshEstimation::CloudMedialMeshEstimation()
+{
+  // On a splat surface the test is a full winding-number evaluation per collapse (the face
+  // crossing count needs a closed surface): 30 % of Q-MAT's time, for the same PSB scores.
+  estimation_.setKeepCentresInside(false);
+}
 
 void
 CloudMedialMeshEstimation::setAreaKSearch(int k)

@@ -111,7 +111,8 @@ computeMeshSmoothnessEdges(const TriangleMesh& mesh, double omega, CreaseModel m
 std::vector<PottsEdge>
 computeCloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
                             const pcl::PointCloud<pcl::Normal>::ConstPtr& normals,
-                            const std::vector<int>& nodes, int k, double omega)
+                            const std::vector<int>& nodes, int k, double omega,
+                            CreaseModel model)
 {
   std::vector<PottsEdge> edges;
   if (!cloud || nodes.size() < 2 || k < 1)
@@ -157,7 +158,8 @@ computeCloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& clou
       w = computeCreaseCost((*cloud)[ia].getVector3fMap().cast<double>(),
                             (*normals)[ia].getNormalVector3fMap().cast<double>(),
                             (*cloud)[ib].getVector3fMap().cast<double>(),
-                            (*normals)[ib].getNormalVector3fMap().cast<double>(), omega);
+                            (*normals)[ib].getNormalVector3fMap().cast<double>(), omega,
+                            model);
     }
     edges.push_back({p.first, p.second, std::floor(w * degree_scale)});
   }
@@ -247,10 +249,9 @@ MeshLabelTransfer::transfer(std::vector<int>& face_labels)
     return false;
   }
   // The face graph is only needed when there is something to cut (and then kept for reuse).
-  if (parts_.size() > 1 && (!edges_valid_ || edges_omega_ != omega_)) {
+  if (parts_.size() > 1 && edgesStale()) {
     solver_.setEdges(computeMeshSmoothnessEdges(*mesh_, omega_, crease_model_));
-    edges_valid_ = true;
-    edges_omega_ = omega_;
+    markEdgesBuilt();
   }
   std::vector<Eigen::Vector3d> centroids(mesh_->numFaces());
   for (std::size_t f = 0; f < centroids.size(); ++f)
@@ -387,10 +388,10 @@ CloudLabelTransfer::transfer(std::vector<int>& point_labels)
     return false;
   }
   // The neighbour graph is only needed when there is something to cut (and then kept).
-  if (parts_.size() > 1 && (!edges_valid_ || edges_omega_ != omega_)) {
-    solver_.setEdges(computeCloudSmoothnessEdges(cloud_, normals_, nodes_, k_, omega_));
-    edges_valid_ = true;
-    edges_omega_ = omega_;
+  if (parts_.size() > 1 && edgesStale()) {
+    solver_.setEdges(
+        computeCloudSmoothnessEdges(cloud_, normals_, nodes_, k_, omega_, crease_model_));
+    markEdgesBuilt();
   }
   std::vector<Eigen::Vector3d> positions(nodes_.size());
   for (std::size_t k = 0; k < nodes_.size(); ++k)

@@ -42,7 +42,8 @@ public:
   using Ptr = std::shared_ptr<CloudMedialMeshEstimation>;
   using ConstPtr = std::shared_ptr<const CloudMedialMeshEstimation>;
 
-  /** \brief Defaults: k = 8 for the point areas; MedialMeshEstimation's targets and limits. */
+  /** \brief Defaults: k = 8 for the point areas; MedialMeshEstimation's targets and limits,
+   * merged centres not tested against the surface (MedialMeshEstimation::setKeepCentresInside). */
   CloudMedialMeshEstimation();
 
   /** \brief The points with unit outward normals (points or normals that are not finite are

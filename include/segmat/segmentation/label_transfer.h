@@ -117,7 +117,8 @@ computeMeshSmoothnessEdges(const TriangleMesh& mesh, double omega,
 std::vector<PottsEdge>
 computeCloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
                             const pcl::PointCloud<pcl::Normal>::ConstPtr& normals,
-                            const std::vector<int>& nodes, int k, double omega);
+                            const std::vector<int>& nodes, int k, double omega,
+                            CreaseModel model = CreaseModel::Reference);
 
 /** \brief Renumber labels densely (0..k−1) keeping their order; negative labels stay as they
  * are (unassigned). Absent labels disappear (reference post-processing, §3.10).
@@ -176,6 +177,22 @@ public:
     return omega_;
   }
 
+  /** \brief How a cut across a concave crease is priced (default CreaseModel::SharpConcave;
+   * CreaseModel::Reference reproduces SEG-MAT's transfer, e.g. teddy's reference parts).
+   */
+  void
+  setCreaseModel(CreaseModel model)
+  {
+    crease_model_ = model;
+  }
+
+  /** \brief How a cut across a concave crease is priced. */
+  CreaseModel
+  getCreaseModel() const
+  {
+    return crease_model_;
+  }
+
   /** \brief Largest number of α-expansion cycles (default 100, i.e. until converged; the
    * reference ran 2).
    */
@@ -225,9 +242,30 @@ protected:
   solve(const char* caller, const std::vector<Eigen::Vector3d>& positions,
         std::vector<int>& labels);
 
+  /** \brief True when the cached smoothness edges are missing or were built with another ω
+   * or crease model. */
+  bool
+  edgesStale() const
+  {
+    return !edges_valid_ || edges_omega_ != omega_ || edges_crease_ != crease_model_;
+  }
+
+  /** \brief Records that the solver's edges now match ω and the crease model. */
+  void
+  markEdgesBuilt()
+  {
+    edges_valid_ = true;
+    edges_omega_ = omega_;
+    edges_crease_ = crease_model_;
+  }
+
   MatGraph::ConstPtr graph_;
   std::vector<std::vector<int>> parts_;
   double omega_ = 0.3;
+  CreaseModel crease_model_ = CreaseModel::SharpConcave;
+  bool edges_valid_ = false; ///< the solver holds smoothness edges of the current input
+  double edges_omega_ = 0.0;
+  CreaseModel edges_crease_ = CreaseModel::SharpConcave;
   AlphaExpansion solver_;
   std::vector<int> label_parts_;
 };
@@ -257,24 +295,6 @@ public:
   /** \brief ω = 0.3, CreaseModel::SharpConcave. */
   MeshLabelTransfer() = default;
 
-  /** \brief How a cut across a concave crease is priced (default CreaseModel::SharpConcave;
-   * CreaseModel::Reference reproduces SEG-MAT's transfer, e.g. teddy's reference parts).
-   */
-  void
-  setCreaseModel(CreaseModel model)
-  {
-    if (model != crease_model_)
-      edges_valid_ = false;
-    crease_model_ = model;
-  }
-
-  /** \brief How a cut across a concave crease is priced. */
-  CreaseModel
-  getCreaseModel() const
-  {
-    return crease_model_;
-  }
-
   /** \brief The surface to label (any triangle mesh: open, non-manifold, inconsistently wound
    * and degenerate faces are handled).
    */
@@ -302,9 +322,6 @@ public:
 
 private:
   TriangleMesh::ConstPtr mesh_;
-  CreaseModel crease_model_ = CreaseModel::SharpConcave;
-  bool edges_valid_ = false;
-  double edges_omega_ = 0.0;
 };
 
 /** \brief Carries parts of the MAT graph to the points of a cloud by α-expansion: the mesh
@@ -404,8 +421,6 @@ private:
   pcl::PointCloud<pcl::Normal>::ConstPtr normals_;
   int k_ = 10;
   bool nodes_valid_ = false;
-  bool edges_valid_ = false;
-  double edges_omega_ = 0.0;
   std::size_t max_graph_points_ = 20000;
   std::vector<int> nodes_;         ///< cloud index of each graph node
   std::vector<int> node_of_point_; ///< graph node of each cloud point (-1: not finite)

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <segmat/segmentation/label_transfer.h>
 #include <segmat/segmentation/mat_region_growing.h>
 
 namespace segmat {
@@ -73,6 +74,23 @@ public:
   getPrimitiveWeight() const
   {
     return grower_.getPrimitiveWeight();
+  }
+
+  /** \brief How the cut to faces or points prices a concave crease
+   * (LabelTransferBase::setCreaseModel; default CreaseModel::SharpConcave;
+   * CreaseModel::Reference reproduces SEG-MAT's transfer).
+   */
+  void
+  setCreaseModel(CreaseModel model)
+  {
+    transfer_.setCreaseModel(model);
+  }
+
+  /** \brief How the cut prices a concave crease. */
+  CreaseModel
+  getCreaseModel() const
+  {
+    return transfer_.getCreaseModel();
   }
 
   /** \brief ω, weight of the graph cut's smoothness term (default 0.3). */

@@ -107,22 +107,6 @@ public:
     return structured_;
   }
 
-  /** \brief How the surface cut prices a concave crease (MeshLabelTransfer::setCreaseModel;
-   * default CreaseModel::SharpConcave; CreaseModel::Reference reproduces SEG-MAT's transfer).
-   */
-  void
-  setCreaseModel(CreaseModel model)
-  {
-    transfer_.setCreaseModel(model);
-  }
-
-  /** \brief How the surface cut prices a concave crease. */
-  CreaseModel
-  getCreaseModel() const
-  {
-    return transfer_.getCreaseModel();
-  }
-
   /** \brief Spheres of the computed base MAT (MedialMeshEstimation::setBaseTarget; default
    * 2000). Unused when the medial meshes are given.
    */
