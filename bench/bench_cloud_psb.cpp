@@ -9,7 +9,8 @@
  * conditions: (a) true normals (face normals), (b) no normals (estimated and oriented),
  * (c) Gaussian noise of sigma = 0.5 % of the bounding-box diagonal, no normals.
  *
- * Usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6,...] [--json]
+ * Usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6,...] [--json] [--conditions abc]
+ *        [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] [--reference-crease]
  *   PSB_DIR defaults to ../shared/data/psb-dev (off/N.off, seg/Benchmark/N/N_k.seg).
  */
 // The test sampler is compiled in (bench programs link only the library).
