@@ -9,7 +9,7 @@
  * repository root (the default mesh is data/teddy/teddy.off).
  *
  * Usage: bench_cloud [MESH.off] [--points N] [--estimate-normals] [--threads N] [--repeat R]
- *                    [--working N] [--samples N] [--meso-skeleton]
+ *                    [--working N] [--samples N] [--keep-inside] [--meso-skeleton]
  *                    [--balls N] [--contraction N]   (meso-skeleton parameters)
  */
 // The test sampler is compiled in (bench programs link only the library).
@@ -65,8 +65,8 @@ main(int argc, char** argv)
       mesh_path = arg;
     else {
       std::cerr << "usage: bench_cloud [MESH.off] [--points N] [--estimate-normals] "
-                   "[--threads N] [--repeat R] [--working N] [--samples N] [--meso-skeleton] "
-                   "[--balls N] [--contraction N]\n";
+                   "[--threads N] [--repeat R] [--working N] [--samples N] [--keep-inside] "
+                   "[--meso-skeleton] [--balls N] [--contraction N]\n";
       return 2;
     }
   }
