@@ -11,7 +11,10 @@
  *
  * Usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6,...] [--json] [--conditions abc]
  *        [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] [--reference-crease]
+ *        [--dump DIR]
  *   PSB_DIR defaults to ../shared/data/psb-dev (off/N.off, seg/Benchmark/N/N_k.seg).
+ *   --dump DIR writes DIR/<model>_<a|b|c>.txt: "x y z label truth nx ny nz" per point (the
+ *   cloud as segmented, our label, the first human's label, the sample's true normal).
  */
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"
@@ -27,6 +30,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -82,11 +86,12 @@ struct Settings
   int smoothing = -1;
   bool keep_inside = false;
   bool reference_crease = false;
+  std::string dump_dir; ///< when set: one point file per model and condition (see Usage)
 };
 
 Result
 run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int>>& truths,
-    const Settings& settings)
+    const Settings& settings, const std::string& dump_name)
 {
   segmat::CloudSegmentation<pcl::PointNormal> seg;
   seg.setInputCloud(sampled.toPointNormal());
@@ -115,6 +120,13 @@ run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int
   std::vector<int> labels = ok ? seg.getLabels() : std::vector<int>(sampled.size(), 0);
   for (const auto& truth : truths)
     r.ri += randIndexError(labels, truth);
+  if (!settings.dump_dir.empty()) {
+    std::ofstream out(settings.dump_dir + "/" + dump_name + ".txt");
+    for (std::size_t i = 0; i < sampled.size(); ++i)
+      out << sampled.points[i].x() << ' ' << sampled.points[i].y() << ' ' << sampled.points[i].z()
+          << ' ' << labels[i] << ' ' << truths[0][i] << ' ' << sampled.normals[i].x() << ' '
+          << sampled.normals[i].y() << ' ' << sampled.normals[i].z() << '\n';
+  }
   r.ri /= double(truths.size());
   return r;
 }
@@ -151,6 +163,8 @@ main(int argc, char** argv)
       settings.reference_crease = true;
     else if (arg == "--smoothing" && i + 1 < argc)
       settings.smoothing = std::stoi(argv[++i]);
+    else if (arg == "--dump" && i + 1 < argc)
+      settings.dump_dir = argv[++i];
     else if (arg == "--conditions" && i + 1 < argc)
       conditions = argv[++i];
     else if (!arg.empty() && arg[0] != '-')
@@ -158,7 +172,7 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json] "
                    "[--conditions abc] [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] "
-                   "[--reference-crease]\n";
+                   "[--reference-crease] [--dump DIR]\n";
       return 2;
     }
   }
@@ -199,9 +213,11 @@ main(int argc, char** argv)
         continue;
       // Conditions left out by --conditions score as 0 with 0 parts.
       auto wanted = [&](char c) { return conditions.find(c) != std::string::npos; };
-      const Result r[3] = {wanted('a') ? run(clean, true, truths, settings) : Result(),
-                           wanted('b') ? run(clean, false, truths, settings) : Result(),
-                           wanted('c') ? run(noisy, false, truths, settings) : Result()};
+      const Result r[3] = {
+          wanted('a') ? run(clean, true, truths, settings, stem + "_a")
+                      : Result(),
+          wanted('b') ? run(clean, false, truths, settings, stem + "_b") : Result(),
+          wanted('c') ? run(noisy, false, truths, settings, stem + "_c") : Result()};
       const int category = (id - 1) / 20;
       auto& cat = by_category[category];
       cat.resize(3);

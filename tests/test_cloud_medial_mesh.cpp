@@ -5,6 +5,7 @@
 #include <segmat/geometry/splat_surface.h>
 #include <segmat/geometry/winding_number.h>
 #include <segmat/medial/cloud_medial_mesh_estimation.h>
+#include <segmat/medial/voronoi_mat.h>
 
 #include <gtest/gtest.h>
 
@@ -99,6 +100,42 @@ TEST(CloudMedialMeshEstimation, SphereMedialAxisIsItsCentre)
   EXPECT_NEAR(medianRadius(base), 1.0, 0.03);
   for (std::size_t v = 0; v < base.numVertices(); ++v)
     EXPECT_LT(base.centers()[v].norm() + base.radii()[v], 1.05); // every ball inside the sphere
+}
+
+TEST(VoronoiMat, SampleNormalsSettleMostInsideTestsAndChangeNoDecision)
+{
+  // Torus cloud with its true normals, splat surface for the winding number: the normals must
+  // decide most circumcentres (a pole sees all four samples within 60° of their normals) and
+  // give exactly the medial mesh that the winding number alone gives.
+  const SampledCloud torus = torusCloud(6000, 9);
+  auto points = std::make_shared<std::vector<Eigen::Vector3d>>();
+  auto normals = std::make_shared<std::vector<Eigen::Vector3d>>();
+  for (std::size_t i = 0; i < torus.size(); ++i) {
+    points->push_back(torus.points[i].cast<double>());
+    normals->push_back(torus.normals[i].cast<double>());
+  }
+  // Surface area of the torus R = 2, r = 0.5: 4π²Rr = 4π², shared by the points.
+  const std::vector<double> areas(points->size(), 4.0 * M_PI * M_PI / double(points->size()));
+  auto splats = std::make_shared<TriangleMesh>(makeSplatSurface(*points, *normals, areas));
+  auto winding = std::make_shared<WindingNumber>(*splats, false);
+  MedialMesh with, without;
+  VoronoiMatStatistics with_stats, without_stats;
+  for (const bool use_normals : {true, false}) {
+    VoronoiMat voronoi;
+    voronoi.setInputMesh(splats);
+    voronoi.setWindingNumber(winding);
+    voronoi.setSurfaceSamples(points, use_normals ? normals : nullptr);
+    ASSERT_TRUE(voronoi.compute(use_normals ? with : without));
+    (use_normals ? with_stats : without_stats) = voronoi.getStatistics();
+  }
+  EXPECT_GT(without_stats.num_winding_evaluations, without_stats.num_inside); // every candidate
+  EXPECT_LT(with_stats.num_winding_evaluations, without_stats.num_winding_evaluations / 5);
+  EXPECT_EQ(with_stats.num_inside, without_stats.num_inside);
+  ASSERT_EQ(with.numVertices(), without.numVertices());
+  ASSERT_GT(with.numVertices(), 1000u);
+  for (std::size_t v = 0; v < with.numVertices(); ++v)
+    ASSERT_EQ(with.centers()[v], without.centers()[v]);
+  EXPECT_EQ(with.numTriangles(), without.numTriangles());
 }
 
 TEST(CloudMedialMeshEstimation, BadInputFailsCleanly)

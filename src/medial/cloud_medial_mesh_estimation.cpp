@@ -41,14 +41,14 @@ CloudMedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
   }
   pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
   auto points = std::make_shared<std::vector<Eigen::Vector3d>>();
-  std::vector<Eigen::Vector3d> normals;
+  auto normals = std::make_shared<std::vector<Eigen::Vector3d>>();
   for (const pcl::PointNormal& p : *cloud_) {
     const Eigen::Vector3d position = p.getVector3fMap().cast<double>();
     const Eigen::Vector3d normal = p.getNormalVector3fMap().cast<double>();
     if (!position.allFinite() || !normal.allFinite() || !(normal.norm() > 0.0))
       continue;
     points->push_back(position);
-    normals.push_back(normal);
+    normals->push_back(normal.normalized());
     xyz->push_back(pcl::PointXYZ(p.x, p.y, p.z));
   }
   if (points->size() < 4) {
@@ -70,7 +70,7 @@ CloudMedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
     tree.nearestKSearch((*xyz)[i], k + 1, found, distances);
     areas[i] = distances.empty() ? 0.0 : kPi * double(distances.back()) / (k + 1);
   }
-  *splats_ = makeSplatSurface(*points, normals, areas);
+  *splats_ = makeSplatSurface(*points, *normals, areas);
   if (splats_->empty()) {
     PCL_ERROR("[segmat::CloudMedialMeshEstimation::compute] The points all coincide: no "
               "surface area.\n");
@@ -79,7 +79,8 @@ CloudMedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
   // The splats are oriented by the normals and share no edge: no orientation repair.
   auto winding_number = std::make_shared<WindingNumber>(*splats_, false);
   estimation_.setInputMesh(splats_);
-  estimation_.setSurfaceSamples(points);
+  // The normals let the Voronoi step skip the winding number where they settle the question.
+  estimation_.setSurfaceSamples(points, normals);
   estimation_.setWindingNumber(winding_number);
   const bool ok = estimation_.compute(base, structured);
   // Do not keep the cloud's data alive in the member.

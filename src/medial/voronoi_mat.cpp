@@ -106,23 +106,45 @@ usedVertexBounds(const TriangleMesh& mesh, Eigen::AlignedBox3d& bounds)
  */
 std::vector<char>
 classifyTetrahedra(const WindingNumber& winding_number, const DelaunayTetrahedra& delaunay,
-                   const std::vector<Eigen::Vector3d>& centres, const std::vector<int>& candidates,
-                   unsigned threads, std::size_t& evaluations)
+                   const std::vector<Eigen::Vector3d>& centres, const std::vector<double>& radii,
+                   const std::vector<int>& candidates, const std::vector<Eigen::Vector3d>& normals,
+                   double min_pole_radius, unsigned threads, std::size_t& evaluations)
 {
   const int num_tets = static_cast<int>(delaunay.tetrahedra.size());
   std::vector<char> inside(num_tets, 0);
   evaluations = 0;
   if (!winding_number.isClosed()) {
-    // Open input: the winding number is not piecewise constant, so evaluate it everywhere.
+    // Open input: the winding number is not piecewise constant, so evaluate it wherever the
+    // samples' normals do not settle the question (all of them when there are no normals).
+    constexpr double kCosPole = 0.5; // within 60° of the normal, as at a pole
+    std::vector<int> undecided;
+    undecided.reserve(candidates.size());
+    for (int t : candidates) {
+      if (normals.empty() || !(radii[t] > min_pole_radius)) {
+        undecided.push_back(t);
+        continue;
+      }
+      int behind = 0, ahead = 0;
+      for (int k = 0; k < 4; ++k) {
+        const int v = delaunay.tetrahedra[t][k];
+        const double c = (delaunay.points[v] - centres[t]).dot(normals[v]) / radii[t];
+        behind += c > kCosPole;
+        ahead += c < -kCosPole;
+      }
+      if (behind == 4)
+        inside[t] = 1;
+      else if (ahead != 4)
+        undecided.push_back(t);
+    }
     std::vector<Eigen::Vector3d> queries;
-    queries.reserve(candidates.size());
-    for (int t : candidates)
+    queries.reserve(undecided.size());
+    for (int t : undecided)
       queries.push_back(centres[t]);
     std::vector<double> winding;
     winding_number.evaluate(queries, winding, threads);
     evaluations = queries.size();
-    for (std::size_t i = 0; i < candidates.size(); ++i)
-      inside[candidates[i]] = winding[i] > 0.5;
+    for (std::size_t i = 0; i < undecided.size(); ++i)
+      inside[undecided[i]] = winding[i] > 0.5;
     return inside;
   }
   // A closed mesh has an integer winding number that changes only across faces: evaluate it at
@@ -242,25 +264,41 @@ bool
 VoronoiMat::sample(const TriangleMesh& mesh, double diagonal)
 {
   const double spacing = max_spacing_ > 0.0 ? max_spacing_ * diagonal : 0.0;
-  std::vector<Eigen::Vector3d> candidates;
+  std::vector<Eigen::Vector3d> candidates, candidate_normals;
+  const bool with_normals = surface_samples_ && surface_normals_ &&
+                            surface_normals_->size() == surface_samples_->size();
+  if (surface_samples_ && surface_normals_ && !with_normals)
+    PCL_WARN("[segmat::VoronoiMat::compute] %zu sample normals for %zu samples: ignored.\n",
+             surface_normals_->size(), surface_samples_->size());
   if (surface_samples_) {
-    for (const Eigen::Vector3d& p : *surface_samples_)
-      if (p.allFinite())
-        candidates.push_back(p);
+    for (std::size_t i = 0; i < surface_samples_->size(); ++i)
+      if ((*surface_samples_)[i].allFinite()) {
+        candidates.push_back((*surface_samples_)[i]);
+        if (with_normals)
+          candidate_normals.push_back((*surface_normals_)[i]);
+      }
   }
   else
     candidates = sampleSurface(mesh, spacing);
   const std::vector<int> representative = weldPoints(candidates, 1e-9 * diagonal);
   samples_.clear();
+  sample_normals_.clear();
   samples_.reserve(candidates.size());
   for (std::size_t i = 0; i < candidates.size(); ++i)
-    if (representative[i] == static_cast<int>(i))
+    if (representative[i] == static_cast<int>(i)) {
       samples_.push_back(candidates[i]);
+      if (with_normals)
+        sample_normals_.push_back(candidate_normals[i]);
+    }
   if (max_samples_ > 0 && samples_.size() > max_samples_) {
-    std::vector<Eigen::Vector3d> thinned;
-    for (int i : thinPointsToCount(samples_, max_samples_))
+    std::vector<Eigen::Vector3d> thinned, thinned_normals;
+    for (int i : thinPointsToCount(samples_, max_samples_)) {
       thinned.push_back(samples_[i]);
+      if (with_normals)
+        thinned_normals.push_back(sample_normals_[i]);
+    }
     samples_.swap(thinned);
+    sample_normals_.swap(thinned_normals);
   }
   if (jitter_ > 0.0) {
     const double amplitude = jitter_ * diagonal;
@@ -304,6 +342,7 @@ VoronoiMat::compute(MedialMesh& output)
   output = MedialMesh();
   statistics_ = VoronoiMatStatistics();
   samples_.clear();
+  sample_normals_.clear();
   if (!mesh_) {
     PCL_ERROR("[segmat::VoronoiMat::compute] No input mesh set.\n");
     return false;
@@ -345,8 +384,15 @@ VoronoiMat::compute(MedialMesh& output)
     own->setAccuracy(beta_);
     winding_number = std::move(own);
   }
+  // Normals decide only balls wider than twice the sample spacing: noise leaves small empty
+  // balls against the surface whose four normals agree by chance.
+  double area = 0.0;
+  for (int f = 0; f < static_cast<int>(mesh.numFaces()); ++f)
+    area += mesh.faceArea(f);
+  const double min_pole_radius = 2.0 * std::sqrt(area / double(samples_.size()));
   const std::vector<char> inside = classifyTetrahedra(
-      *winding_number, delaunay, centres, candidates, threads_, statistics_.num_winding_evaluations);
+      *winding_number, delaunay, centres, radii, candidates, sample_normals_, min_pole_radius,
+      threads_, statistics_.num_winding_evaluations);
   std::vector<int> vertex_of(num_tets, -1);
   std::vector<Eigen::Vector3d> mat_centres;
   std::vector<double> mat_radii;

@@ -25,9 +25,13 @@ namespace segmat {
  *     normal is non-finite or zero; if more than 1 % are bad the normals are estimated instead);
  *  2. keep one point per voxel (segmat::voxelRepresentativesNear) when there are more than
  *     the working size, then drop exact duplicates (lowest index kept);
- *  3. normals: the input's, normalised (default when it has them); or, after
- *     setSmoothingIterations() passes of robust quadratic smoothing of the positions,
- *     pcl::NormalEstimationOMP over k neighbours (the result does not depend on the thread
+ *  3. normals: the input's, normalised (default when it has them); or estimated: first, when
+ *     the cloud is noisy (a point's median offset from the plane of its 8 nearest neighbours,
+ *     as a Gaussian σ, above 10 % of the spacing; clean samples show 2–4 %), up to
+ *     setSmoothingIterations() passes of *sided* quadratic smoothing — each point moves onto
+ *     a height field fitted with weights on the residual (bandwidth 1.5 σ), so the two sides of
+ *     a wall thinner than the neighbourhood stay apart instead of collapsing into one sheet —;
+ *     then pcl::NormalEstimationOMP over k neighbours (the result does not depend on the thread
  *     count: every point's normal is computed alone), oriented by segmat::NormalOrientation.
  */
 class CloudPreprocessing
@@ -89,12 +93,12 @@ public:
     return orientation_k_;
   }
 
-  /** \brief Largest number of smoothing passes before normals are estimated (>= 0, default 5):
-   * each point moves onto a robust quadratic height field fitted to its 2·normal_k nearest
-   * neighbours (MLS-like); passes stop once the median move is below 5 % of the median spacing
-   * (a clean sample: one pass). Only clouds whose normals are estimated are smoothed: it takes
-   * scanner noise off before the shrinking balls, which stop on any sample that noise pushes
-   * inside a ball.
+  /** \brief Largest number of smoothing passes before normals are estimated (>= 0, default 5).
+   * Only noisy clouds whose normals are estimated are smoothed (see the class description; a
+   * clean sample is left exactly as it is): each pass moves every point onto the sided
+   * quadratic height field of its 2·normal_k nearest neighbours; passes stop once the median
+   * move is below 5 % of the median spacing. Noise otherwise leaves Voronoi poles and shrinking
+   * balls stuck on the bumps.
    */
   void
   setSmoothingIterations(int iterations);

@@ -81,12 +81,13 @@ public:
   /** \brief Sample jitter relative to the diagonal. */
   double getJitter() const { return voronoi_.getJitter(); }
 
-  /** \brief Surface samples to use instead of sampling the mesh (VoronoiMat::setSurfaceSamples;
-   * null, the default, samples the mesh). */
+  /** \brief Surface samples to use instead of sampling the mesh, optionally with their outward
+   * unit normals (VoronoiMat::setSurfaceSamples; null, the default, samples the mesh). */
   void
-  setSurfaceSamples(std::shared_ptr<const std::vector<Eigen::Vector3d>> samples)
+  setSurfaceSamples(std::shared_ptr<const std::vector<Eigen::Vector3d>> samples,
+                    std::shared_ptr<const std::vector<Eigen::Vector3d>> normals = nullptr)
   {
-    voronoi_.setSurfaceSamples(std::move(samples));
+    voronoi_.setSurfaceSamples(std::move(samples), std::move(normals));
   }
 
   /** \brief Winding-number hierarchy of the input mesh for the inside tests, instead of the one

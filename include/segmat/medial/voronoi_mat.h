@@ -119,11 +119,22 @@ public:
    * cloud whose mesh is only a splat surface for the inside test; see CloudMedialMeshEstimation).
    * They are deduplicated, thinned to the sample limit and jittered like mesh samples; the mesh
    * then only serves the inside test and the bounding box. Null (the default) samples the mesh.
-   * \param[in] samples the points, or null */
+   *
+   * With outward unit \a normals (one per sample), the centre of a ball wider than twice the
+   * sample spacing (√(area / samples)) that lies clearly on the inner side of all four of its
+   * samples' tangent planes — the direction to each sample within 60° of its normal, as at a
+   * pole — is inside without a winding number, and one clearly on the outer side of all four is
+   * outside; only the others (small balls, which noise leaves against the surface; a centre near
+   * a tangent plane; samples that disagree, as across a thin wall) are evaluated. On a clean
+   * cloud that skips most evaluations and changes no decision (test_cloud_medial_mesh).
+   * \param[in] samples the points, or null
+   * \param[in] normals their outward unit normals, or null (winding number everywhere) */
   void
-  setSurfaceSamples(std::shared_ptr<const std::vector<Eigen::Vector3d>> samples)
+  setSurfaceSamples(std::shared_ptr<const std::vector<Eigen::Vector3d>> samples,
+                    std::shared_ptr<const std::vector<Eigen::Vector3d>> normals = nullptr)
   {
     surface_samples_ = std::move(samples);
+    surface_normals_ = std::move(normals);
   }
 
   /** \brief The surface samples given with setSurfaceSamples() (null: the mesh is sampled). */
@@ -267,6 +278,7 @@ private:
   TriangleMesh::ConstPtr mesh_;
   std::shared_ptr<const WindingNumber> winding_number_; ///< shared hierarchy, or null
   std::shared_ptr<const std::vector<Eigen::Vector3d>> surface_samples_; ///< given samples, or null
+  std::shared_ptr<const std::vector<Eigen::Vector3d>> surface_normals_; ///< their normals, or null
   double max_spacing_;
   std::size_t max_samples_;
   double jitter_;
@@ -275,6 +287,7 @@ private:
   unsigned threads_;
   VoronoiMatStatistics statistics_;
   std::vector<Eigen::Vector3d> samples_;
+  std::vector<Eigen::Vector3d> sample_normals_; ///< one per sample when surface_normals_ is set
 };
 
 } // namespace segmat
