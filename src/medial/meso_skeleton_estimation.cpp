@@ -167,6 +167,19 @@ mergeByVoxel(const std::vector<Eigen::Vector3f>& points, const std::vector<float
 
 } // namespace
 
+std::vector<int>
+inputToWorking(std::size_t input_size, const pcl::Indices& indices,
+               const std::vector<int>& copy_to_working)
+{
+  std::vector<int> map;
+  if (copy_to_working.empty())
+    return map;
+  map.assign(input_size, -1);
+  for (std::size_t i = 0; i < indices.size() && i < copy_to_working.size(); ++i)
+    map[indices[i]] = copy_to_working[i];
+  return map;
+}
+
 bool
 preprocessCloud(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, bool has_normals,
                 const MesoSkeletonParameters& params, pcl::PointCloud<pcl::PointNormal>& working,

@@ -81,6 +81,17 @@ preprocessCloud(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, bool h
                 std::vector<int>& working_indices, std::vector<int>& input_to_working,
                 MesoSkeletonStatistics& stats);
 
+/** \brief The input-to-working map of a cloud that was copied from \a indices of the input.
+ * \param[in] input_size points in the input cloud
+ * \param[in] indices copy point i is input point indices[i]
+ * \param[in] copy_to_working for each copy point, its working point (-1: none); may be empty
+ * \return for each input point, its working point; -1 for points outside \a indices (empty
+ *         when \a copy_to_working is)
+ */
+std::vector<int>
+inputToWorking(std::size_t input_size, const pcl::Indices& indices,
+               const std::vector<int>& copy_to_working);
+
 /** \brief The meso-skeleton of a cloud given as pcl::PointNormal (the untyped core of
  * segmat::MesoSkeletonEstimation; see there).
  * \param[in] cloud the points (non-finite ones are skipped)

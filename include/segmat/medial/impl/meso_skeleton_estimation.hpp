@@ -115,11 +115,7 @@ MesoSkeletonEstimation<PointT>::compute(pcl::PointCloud<MedialPoint>& skeleton)
   const pcl::Indices& map = *indices_;
   for (int& i : working_indices_)
     i = map[i];
-  if (!copy_to_working.empty()) {
-    input_to_working_.assign(input_->size(), -1);
-    for (std::size_t i = 0; i < map.size(); ++i)
-      input_to_working_[map[i]] = copy_to_working[i];
-  }
+  input_to_working_ = detail::inputToWorking(input_->size(), map, copy_to_working);
   for (MedialPoint& m : skeleton) {
     if (m.surface_index >= 0)
       m.surface_index = map[m.surface_index];

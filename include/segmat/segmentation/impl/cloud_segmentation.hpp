@@ -72,10 +72,7 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
     if (detail::preprocessCloud(cloud, has_normals && params.use_input_normals, params,
                                 *working_, working_indices, copy_to_working, stats)) {
       stage_seconds_.emplace_back("preprocessing", stats.seconds_preprocessing);
-      // Indices into the copy → indices into the input cloud.
-      input_to_working_.assign(input_->size(), -1);
-      for (std::size_t i = 0; i < indices_->size() && i < copy_to_working.size(); ++i)
-        input_to_working_[(*indices_)[i]] = copy_to_working[i];
+      input_to_working_ = detail::inputToWorking(input_->size(), *indices_, copy_to_working);
       medial_ok = detail::medialMeshGraph(working_, mesh_estimation_, base_, structured_, graph,
                                           tags, stage_seconds_);
     }
