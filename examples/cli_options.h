@@ -36,6 +36,16 @@ parseNonNegative(const std::string& option, const std::string& text)
   return value;
 }
 
+/** --max-bend: an angle in degrees in (0, 90] (MatRegionGrowing::setMaxBendAngle). */
+inline double
+parseBendAngle(const std::string& option, const std::string& text)
+{
+  const double value = parseNumber(option, text);
+  if (!(value > 0.0) || value > 90.0)
+    throw Error("option " + option + ": '" + text + "' is not an angle in (0, 90] degrees");
+  return value;
+}
+
 /** A whole number >= lowest (and <= 1e9). */
 inline long
 parseInteger(const std::string& option, const std::string& text, long lowest)

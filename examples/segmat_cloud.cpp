@@ -34,6 +34,8 @@ const char* const kUsage =
     "  -k K               neighbours of the k-NN graphs (default 10)\n"
     "  --estimate-normals ignore the file's normals and estimate them\n"
     "  --no-visibility    merge parts without the visibility test\n"
+    "  --max-bend DEG     largest turn of a bulky tube inside one part (default 60; 90 = off,\n"
+    "                     as in SEG-MAT)\n"
     "  --meso-skeleton    medial axis from shrinking balls (no faces) instead of the default\n"
     "                     Voronoi medial mesh of the points\n"
     "  --save-mat         also write PREFIX_base.ma and PREFIX_struct.ma (medial mesh only)\n"
@@ -87,6 +89,8 @@ main(int argc, char** argv)
         segmentation.setNumberOfThreads(static_cast<unsigned>(parseInteger(arg, value(), 1)));
       else if (arg == "--estimate-normals")
         estimate_normals = true;
+      else if (arg == "--max-bend")
+        segmentation.setMaxBendAngle(parseBendAngle(arg, value()));
       else if (arg == "--no-visibility")
         segmentation.setVisibilityFlag(false);
       else if (arg == "--meso-skeleton")

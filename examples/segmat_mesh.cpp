@@ -25,7 +25,8 @@ namespace {
 
 const char* const kUsage =
     "usage: segmat_mesh MESH -o PREFIX [-b BASE.ma -s STRUCTURED.ma] [--save-mat] [-g DELTA0]\n"
-    "                   [-n ETA] [--seed S] [--reference-crease] [--threads T]\n"
+    "                   [-n ETA] [--seed S] [--max-bend DEG] [--reference-crease]\n"
+    "                   [--threads T]\n"
     "                   [--json]\n"
     "  MESH            closed triangle mesh (.off, .ply, .obj, .stl)\n"
     "  -o PREFIX       writes PREFIX.seg (one label per face, PSB format) and PREFIX.ply\n"
@@ -38,6 +39,8 @@ const char* const kUsage =
     "  -g DELTA0       growing threshold (default 0.015)\n"
     "  -n ETA          minimal region, fraction of the base MAT's spheres (default 0.002)\n"
     "  --seed S        seed of the merging's visibility sampling (default 386727)\n"
+    "  --max-bend DEG  largest turn of a bulky tube inside one part (default 60; 90 = off,\n"
+    "                  as in SEG-MAT)\n"
     "  --reference-crease  price concave creases in the surface cut as SEG-MAT does\n"
     "                  (default: a sharp concave crease is much cheaper to cut than a shallow\n"
     "                  one; see README)\n"
@@ -92,6 +95,8 @@ main(int argc, char** argv)
           throw segmat::Error("option --seed: give a whole number in [0, 2^32)");
         segmentation.setRandomSeed(static_cast<unsigned>(seed));
       }
+      else if (arg == "--max-bend")
+        segmentation.setMaxBendAngle(parseBendAngle(arg, value()));
       else if (arg == "--reference-crease")
         segmentation.setCreaseModel(segmat::CreaseModel::Reference);
       else if (arg == "--json")

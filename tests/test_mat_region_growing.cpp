@@ -33,10 +33,11 @@ struct Result
 
 Result
 segment(const MatGraph::ConstPtr& graph, const SegmentVisibility& visibility = {},
-        const StructureTags* tags = nullptr, unsigned seed = 0x5e6a7u)
+        const StructureTags* tags = nullptr, unsigned seed = 0x5e6a7u, double max_bend = 60.0)
 {
   MatRegionGrowing grower;
   grower.setInputGraph(graph);
+  grower.setMaxBendAngle(max_bend);
   if (tags)
     grower.setStructureTags(*tags);
   grower.setSegmentVisibility(visibility);
@@ -245,6 +246,63 @@ TEST(MatRegionGrowing, LShapedTubeSplitsAtTheElbow)
             0);
   EXPECT_EQ(commonLabel(*graph, r.labels, [](const Eigen::Vector3d& p) { return p.y() > 0.25; }),
             1);
+}
+
+TEST(MatRegionGrowing, BendGuardSplitsAGentleElbowOfABulkyTube)
+{
+  // A tube of radius 0.8: leg 1 along x from (0,0,0) to (2,0,0) (20 cones), a quarter arc of
+  // radius 1 centred at (2,1,0) in 18 steps of 5° (each step costs α·C_θ = 0.05·5/180 = 0.0014,
+  // far below δ0), leg 2 along y from (3,1,0) to (3,3,0) (20 cones). SEG-MAT's local test grows
+  // all 58 cones as one region. The structured MAT sees an L: (0,0,0)–(3,0,0)–(3,3,0), radius
+  // 0.8, one line through a simple joint with ρ = 6/0.8 = 7.5 ≤ 8, so bulky (tag 0) with axes
+  // x and y. The arc point at angle φ (from −y) is (2 + sin φ, 1 − cos φ): nearer the x segment
+  // while 1 − cos φ < 1 − sin φ, i.e. φ < 45°. The seed (equal radii: lowest index, cone 0)
+  // takes axis x, so region 1 is leg 1 plus the 9 arc cones below 45°: 29 cones.
+  SyntheticMat m;
+  std::vector<Eigen::Vector3d> pts;
+  for (int i = 0; i <= 20; ++i)
+    pts.emplace_back(0.1 * i, 0, 0);
+  for (int i = 1; i <= 18; ++i) {
+    const double phi = (5.0 * i) * M_PI / 180.0;
+    pts.emplace_back(2.0 + std::sin(phi), 1.0 - std::cos(phi), 0);
+  }
+  for (int i = 1; i <= 20; ++i)
+    pts.emplace_back(3, 1.0 + 0.1 * i, 0);
+  m.addChain(-1, pts, std::vector<double>(pts.size(), 0.8));
+  const MedialMesh mat = m.build();
+  const auto graph = graphOf(mat);
+  ASSERT_EQ(graph->numNodes(), 58u);
+  const MedialMesh l_shape({{0, 0, 0}, {3, 0, 0}, {3, 3, 0}}, {0.8, 0.8, 0.8}, {{0, 1}, {1, 2}},
+                           {});
+  const StructureTags tags = computeStructureTags(l_shape, *graph);
+  ASSERT_EQ(tags.numThinParts(), 0);
+  const Result r = segment(graph, test::unionOfBallsVisibility(mat), &tags);
+  ASSERT_TRUE(r.ok);
+  ASSERT_FALSE(r.grown.empty());
+  EXPECT_EQ(r.grown.front(), 29);
+  ASSERT_EQ(r.parts.size(), 2u);
+  const int leg1 =
+      commonLabel(*graph, r.labels, [](const Eigen::Vector3d& p) { return p.y() == 0; });
+  const int leg2 =
+      commonLabel(*graph, r.labels, [](const Eigen::Vector3d& p) { return p.y() > 1.5; });
+  EXPECT_GE(leg1, 0);
+  EXPECT_GE(leg2, 0);
+  EXPECT_NE(leg1, leg2);
+
+  // Disabled (90°, the reference's rule), or without a structured MAT: one region.
+  MatRegionGrowing grower;
+  EXPECT_EQ(grower.getMaxBendAngle(), 60.0);
+  grower.setInputGraph(graph);
+  grower.setStructureTags(tags);
+  grower.setMaxBendAngle(90.0);
+  std::vector<pcl::PointIndices> parts;
+  ASSERT_TRUE(grower.extract(parts));
+  EXPECT_EQ(grower.getGrownRegionSizes(), std::vector<int>{58});
+  EXPECT_EQ(segment(graph).grown, std::vector<int>{58});
+  // Out of (0, 90]: rejected, the old value stays.
+  grower.setMaxBendAngle(0.0);
+  grower.setMaxBendAngle(120.0);
+  EXPECT_EQ(grower.getMaxBendAngle(), 90.0);
 }
 
 TEST(MatRegionGrowing, VisibilityKeepsABentArmApart)
@@ -484,11 +542,12 @@ TEST(MatRegionGrowing, TeddyWithTheAuthorsMats)
   const Teddy t = loadTeddy();
   pcl::console::setVerbosityLevel(pcl::console::L_INFO);
   // Reference run (reference-facts §7): 3747 nodes (3744 slabs + 3 cones), 25,743 edges, no thin
-  // part, 12 grown regions of the sizes below, 8 tiny patches, 8 parts after merging.
+  // part, 12 grown regions of the sizes below, 8 tiny patches, 8 parts after merging. The bend
+  // guard (not in the reference) is off here: teddy's structured MAT has 9 bulky lines.
   ASSERT_EQ(t.graph->numNodes(), 3747u);
   EXPECT_EQ(t.graph->numEdges(), 25743u);
   EXPECT_EQ(t.tags.numThinParts(), 0);
-  const Result r = segment(t.graph, t.visibility, &t.tags);
+  const Result r = segment(t.graph, t.visibility, &t.tags, 0x5e6a7u, 90.0);
   ASSERT_TRUE(r.ok);
   EXPECT_EQ(r.grown, (std::vector<int>{822, 250, 108, 140, 9, 4, 30, 6, 4, 5, 48, 32}));
   // The reference counted 24 tiny nodes: it listed the start node of each multi-node patch twice
@@ -510,7 +569,12 @@ TEST(MatRegionGrowing, TeddyWithTheAuthorsMats)
     label_sum += l;
   EXPECT_EQ(label_sum, 7688);
   // Deterministic, and the answer does not hinge on the visibility samples.
-  EXPECT_EQ(segment(t.graph, t.visibility, &t.tags).labels, r.labels);
+  EXPECT_EQ(segment(t.graph, t.visibility, &t.tags, 0x5e6a7u, 90.0).labels, r.labels);
+  // With the bend guard (default 60°) the third region (108 nodes) stops where its structured
+  // line turns: 13 grown regions, still 8 parts.
+  const Result bent = segment(t.graph, t.visibility, &t.tags);
+  EXPECT_EQ(bent.grown, (std::vector<int>{822, 250, 30, 135, 9, 4, 13, 30, 6, 4, 5, 48, 32}));
+  EXPECT_EQ(bent.parts.size(), 8u);
   EXPECT_EQ(segment(t.graph, t.visibility, &t.tags, 42u).labels, r.labels);
 }
 

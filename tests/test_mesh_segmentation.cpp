@@ -50,6 +50,8 @@ teddySegmentation(CreaseModel model = CreaseModel::SharpConcave)
 {
   MeshSegmentation seg;
   seg.setCreaseModel(model);
+  if (model == CreaseModel::Reference)
+    seg.setMaxBendAngle(90.0); // the reference has no bend guard
   seg.setInputMesh(teddy().mesh);
   seg.setBaseMat(teddy().base);
   seg.setStructuredMat(teddy().structured);

@@ -145,5 +145,8 @@ TEST(SegmatMesh, BadInputNamesTheFileAndFails)
   run = test::runProgram("segmat_mesh", teddyArgs(prefix) + " -g abc");
   EXPECT_NE(run.status, 0);
   EXPECT_NE(run.err.find("-g"), std::string::npos);
+  run = test::runProgram("segmat_mesh", teddyArgs(prefix) + " --max-bend 0");
+  EXPECT_NE(run.status, 0);
+  EXPECT_NE(run.err.find("--max-bend"), std::string::npos) << run.err;
   EXPECT_FALSE(test::fileExists(prefix + ".seg"));
 }

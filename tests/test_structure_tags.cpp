@@ -87,6 +87,27 @@ TEST(StructureTags, BranchPointCutsUnlessCollinear)
   EXPECT_EQ(t2.node_tag, (std::vector<int>{1, 2}));
 }
 
+TEST(StructureTags, BulkyLinesCarryTheirDirection)
+{
+  // An L of two pure edges through a simple joint (sphere 1 shared by 2 nodes): one line,
+  // L = 4, r = 0.5, ρ = 8 — not > 8, so bulky. Its nodes carry the direction of their segment
+  // (c[v1] − c[v0], normalised); a thin line or a sheet carries none.
+  const MedialMesh l_shape({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}}, {0.5, 0.5, 0.5}, {{0, 1}, {1, 2}},
+                           {});
+  const StructureTags tags = computeStructureTags(l_shape, probes({{1, 0.1, 0}, {2.1, 1.5, 0}}));
+  ASSERT_EQ(tags.numThinParts(), 0);
+  ASSERT_EQ(tags.node_axis.size(), 2u);
+  EXPECT_TRUE(tags.node_axis[0].isApprox(Eigen::Vector3d(1, 0, 0)));
+  EXPECT_TRUE(tags.node_axis[1].isApprox(Eigen::Vector3d(0, 1, 0)));
+  // sheetAndLine(): the line is thin (tag 1), the sheet is a sheet: no direction anywhere.
+  const StructureTags t2 =
+      computeStructureTags(sheetAndLine(), probes({{5.0, 0.3, 0}, {-1, 0, 0.2}}));
+  ASSERT_EQ(t2.node_axis.size(), 2u);
+  EXPECT_TRUE(t2.node_axis[0].isZero());
+  EXPECT_TRUE(t2.node_axis[1].isZero());
+  EXPECT_TRUE(computeStructureTags(MedialMesh(), probes({{0, 0, 0}})).node_axis.empty());
+}
+
 TEST(StructureTags, VeryLongLinesAreDropped)
 {
   // A single line with ρ = 60/0.5 = 120 > 100 takes no part; the sheet is the only component left.

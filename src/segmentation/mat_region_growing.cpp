@@ -246,6 +246,7 @@ MatRegionGrowing::MatRegionGrowing()
 , use_primitive_term_(true)
 , merge_rounds_(3)
 , max_seed_radius_ratio_(3.0)
+, max_bend_angle_(60.0)
 , seed_(0x5e6a7u)
 {}
 
@@ -287,6 +288,13 @@ MatRegionGrowing::setPrimitiveWeight(double lambda)
 {
   detail::assignChecked(lambda_, lambda, lambda >= 0.0 && std::isfinite(lambda),
                         "MatRegionGrowing::setPrimitiveWeight", "finite and >= 0");
+}
+
+void
+MatRegionGrowing::setMaxBendAngle(double degrees)
+{
+  detail::assignChecked(max_bend_angle_, degrees, degrees > 0.0 && degrees <= 90.0,
+                        "MatRegionGrowing::setMaxBendAngle", "in (0, 90]");
 }
 
 void
@@ -376,6 +384,13 @@ MatRegionGrowing::extract(std::vector<pcl::PointIndices>& parts)
       sphere_nodes[g.node(i).v[k]].push_back(i);
   SphereIndex index(g.centers());
 
+  // Tube directions of the nodes (zero: not on a structured line); see setMaxBendAngle().
+  static const std::vector<Eigen::Vector3d> no_axes;
+  const std::vector<Eigen::Vector3d>& axis =
+      tags_.node_axis.size() == static_cast<std::size_t>(n) ? tags_.node_axis : no_axes;
+  // 90° disables the guard: |cos| < cos 90° would still reject exact right angles.
+  const double bend_cos = max_bend_angle_ >= 90.0 ? -1.0 : std::cos(max_bend_angle_ * M_PI / 180.0);
+
   std::vector<char> visited(n, 0);
   std::vector<char> sphere_queried(g.numSpheres(), 0);
   std::vector<Patch> patches;
@@ -386,6 +401,8 @@ MatRegionGrowing::extract(std::vector<pcl::PointIndices>& parts)
     // Breadth-first growth; the test is local: current node against neighbour.
     region.assign(1, seed);
     visited[seed] = 1;
+    Eigen::Vector3d region_axis =
+        axis.empty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : axis[seed];
     for (std::size_t head = 0; head < region.size(); ++head) {
       const int i = region[head];
       for (const int* it = g.neighboursBegin(i); it != g.neighboursEnd(i); ++it) {
@@ -401,10 +418,15 @@ MatRegionGrowing::extract(std::vector<pcl::PointIndices>& parts)
         // matters most inside thin parts, whose threshold δ0·log2 ρ lets larger steps chain.
         if (g.node(j).mean_radius * max_seed_radius_ratio_ < g.node(seed).mean_radius)
           continue;
+        if (!axis.empty() && !region_axis.isZero() && !axis[j].isZero() &&
+            std::abs(region_axis.dot(axis[j])) < bend_cos)
+          continue;
         const double t = growingThreshold(delta0_, tag[i], tag[j], tags_.tag_ratio);
         if (growingCost(g, i, j, weights) <= t) {
           visited[j] = 1;
           region.push_back(j);
+          if (!axis.empty() && region_axis.isZero())
+            region_axis = axis[j];
         }
       }
     }

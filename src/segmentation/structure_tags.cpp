@@ -130,15 +130,19 @@ slendernessRatio(const MedialMesh& s, const std::vector<int>& point_share,
  * reference's float accumulation, which made the sample count depend on rounding). */
 void
 densify(const MedialMesh& s, const std::vector<StructureNode>& nodes,
-        const std::vector<int>& component, std::vector<Eigen::Vector3d>& points)
+        const std::vector<int>& component, std::vector<Eigen::Vector3d>& points,
+        std::vector<Eigen::Vector3d>& axes)
 {
   const auto& c = s.centers();
   for (int i : component) {
     const Eigen::Vector3i& v = nodes[i].v;
     if (nodes[i].is_line) {
+      const Eigen::Vector3d d = c[v[1]] - c[v[0]];
+      const Eigen::Vector3d axis = d.norm() > 0.0 ? Eigen::Vector3d(d.normalized()) : d;
       for (int k = 0; k <= kDensifySteps; ++k) {
         const double a = static_cast<double>(k) / kDensifySteps;
         points.push_back(a * c[v[0]] + (1.0 - a) * c[v[1]]);
+        axes.push_back(axis);
       }
       continue;
     }
@@ -147,6 +151,7 @@ densify(const MedialMesh& s, const std::vector<StructureNode>& nodes,
         const double a = static_cast<double>(k) / kDensifySteps;
         const double b = static_cast<double>(l) / kDensifySteps;
         points.push_back(a * c[v[0]] + b * c[v[1]] + (1.0 - a - b) * c[v[2]]);
+        axes.push_back(Eigen::Vector3d::Zero());
       }
   }
 }
@@ -202,31 +207,36 @@ computeStructureTags(const MedialMesh& structured, const MatGraph& base)
   }
 
   // Densified points, thin parts first: a tie goes to the first thin part (strict <).
-  std::vector<Eigen::Vector3d> points;
+  std::vector<Eigen::Vector3d> points, axes;
   std::vector<int> point_tag;
   for (std::size_t k = 0; k < thin.size(); ++k) {
-    densify(structured, nodes, thin[k], points);
+    densify(structured, nodes, thin[k], points, axes);
     point_tag.resize(points.size(), static_cast<int>(k) + 1);
   }
   for (const auto& component : normal)
-    densify(structured, nodes, component, points);
+    densify(structured, nodes, component, points, axes);
   point_tag.resize(points.size(), 0);
-  if (points.empty() || thin.empty())
+  if (points.empty())
     return tags;
+  tags.node_axis.assign(base.numNodes(), Eigen::Vector3d::Zero());
 
   // Brute force: a structured MAT densifies to a few hundred points.
   for (std::size_t i = 0; i < base.numNodes(); ++i) {
     const Eigen::Vector3d& q = base.node(static_cast<int>(i)).centroid;
     double best = std::numeric_limits<double>::infinity();
-    int tag = 0;
+    std::size_t nearest = 0;
     for (std::size_t p = 0; p < points.size(); ++p) {
       const double d = (points[p] - q).squaredNorm();
       if (d < best) {
         best = d;
-        tag = point_tag[p];
+        nearest = p;
       }
     }
-    tags.node_tag[i] = tag;
+    tags.node_tag[i] = point_tag[nearest];
+    // Only bulky lines carry a direction: a thin part already has its own tag and threshold,
+    // and humans keep a long curling limb (a tentacle) whole.
+    if (point_tag[nearest] == 0)
+      tags.node_axis[i] = axes[nearest];
   }
   return tags;
 }

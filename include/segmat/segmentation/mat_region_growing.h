@@ -170,6 +170,26 @@ public:
     return max_seed_radius_ratio_;
   }
 
+  /** \brief Set the largest turn, in degrees, of a tube inside one grown region (default 60;
+   * 90 disables the guard, as in the reference).
+   *
+   * SEG-MAT's cost compares neighbouring nodes only, so a tube that bends by 90° over many
+   * medial triangles (an L-shaped pipe, an elbow) costs little at every step and stays one part.
+   * The structured MAT sees the bend at once: its lines are a few long segments. Each region
+   * keeps the direction of the first structured line it reaches (StructureTags::node_axis);
+   * a node mapped to a line turned by more than this angle from it is left for a later seed.
+   * Not in SEG-MAT.
+   * \param[in] degrees a value in (0, 90]; other values are rejected with a warning
+   */
+  void
+  setMaxBendAngle(double degrees);
+  /** \brief Largest turn of a tube inside one grown region, in degrees. */
+  double
+  getMaxBendAngle() const
+  {
+    return max_bend_angle_;
+  }
+
   /** \brief Set the visibility test used when merging. When unset (the default) the visibility
    * gate is skipped: parts merge on adjacency and histogram similarity alone.
    */
@@ -248,6 +268,7 @@ private:
   bool use_primitive_term_;
   int merge_rounds_;
   double max_seed_radius_ratio_;
+  double max_bend_angle_;
   SegmentVisibility visibility_;
   unsigned seed_;
 

@@ -76,6 +76,22 @@ public:
     return grower_.getPrimitiveWeight();
   }
 
+  /** \brief Largest turn of a bulky tube inside one grown region, in degrees (default 60; 90
+   * disables it, as in SEG-MAT; MatRegionGrowing::setMaxBendAngle).
+   */
+  void
+  setMaxBendAngle(double degrees)
+  {
+    grower_.setMaxBendAngle(degrees);
+  }
+
+  /** \brief Largest turn of a bulky tube inside one grown region, in degrees. */
+  double
+  getMaxBendAngle() const
+  {
+    return grower_.getMaxBendAngle();
+  }
+
   /** \brief How the cut to faces or points prices a concave crease
    * (LabelTransferBase::setCreaseModel; default CreaseModel::SharpConcave;
    * CreaseModel::Reference reproduces SEG-MAT's transfer).

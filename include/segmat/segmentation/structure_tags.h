@@ -4,6 +4,8 @@
  */
 #pragma once
 
+#include <Eigen/Core>
+
 #include <vector>
 
 namespace segmat {
@@ -23,6 +25,10 @@ struct StructureTags
   std::vector<int> node_tag;
   /// tag_ratio[k] = log2(ρ) of thin part k-1 (> 3 since ρ > 8); tag_ratio[0] = 0
   std::vector<double> tag_ratio{0.0};
+  /// per base-graph node: the unit direction of the structured-MAT segment whose densified point
+  /// is nearest when it belongs to a bulky (tag 0) line component, else zero (sheets, thin
+  /// parts); empty when the structured MAT is empty
+  std::vector<Eigen::Vector3d> node_axis;
 
   /** \brief Number of thin parts. */
   int
