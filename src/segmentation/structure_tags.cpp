@@ -216,7 +216,11 @@ computeStructureTags(const MedialMesh& structured, const MatGraph& base)
   for (const auto& component : normal)
     densify(structured, nodes, component, points, axes);
   point_tag.resize(points.size(), 0);
-  if (points.empty())
+  // Nothing to transfer without a thin part or a bulky line (e.g. a structured MAT of sheets).
+  const bool any_line = std::any_of(normal.begin(), normal.end(), [&](const auto& component) {
+    return nodes[component.front()].is_line;
+  });
+  if (points.empty() || (thin.empty() && !any_line))
     return tags;
   tags.node_axis.assign(base.numNodes(), Eigen::Vector3d::Zero());
 

@@ -27,7 +27,7 @@ struct StructureTags
   std::vector<double> tag_ratio{0.0};
   /// per base-graph node: the unit direction of the structured-MAT segment whose densified point
   /// is nearest when it belongs to a bulky (tag 0) line component, else zero (sheets, thin
-  /// parts); empty when the structured MAT is empty
+  /// parts); empty when the structured MAT has neither a thin part nor a bulky line
   std::vector<Eigen::Vector3d> node_axis;
 
   /** \brief Number of thin parts. */
