@@ -15,17 +15,18 @@ using namespace segmat;
 namespace {
 
 /** Structured MAT: a fat square sheet on x ∈ [−2, 0], y ∈ [−1, 1] (two triangles, radius 1) and a
- * thin line of 4 pure edges from (0,0,0) to (8,0,0) (radius 0.5), touching the sheet at sphere 0.
+ * thin line of 4 pure edges from (0,0,0) to (8,0,0) (radius 0.5 unless given), touching the sheet at sphere 0.
  *  - sheet: A = 4, r_max = 1 → ρ = √4 / 1 = 2 ≤ 8 → normal (tag 0);
  *  - line: L = 8, r_max = 0.5 → ρ = 16 > 8 → thin part 0, tag 1, tag_ratio = log2 16 = 4.
  * A line never joins a sheet, so sphere 0 (shared) does not merge them.
  */
 MedialMesh
-sheetAndLine()
+sheetAndLine(double line_radius = 0.5)
 {
   std::vector<Eigen::Vector3d> c{{0, -1, 0}, {-2, -1, 0}, {-2, 1, 0}, {0, 1, 0}, {0, 0, 0},
                                  {2, 0, 0},  {4, 0, 0},   {6, 0, 0},  {8, 0, 0}};
-  std::vector<double> r{1, 1, 1, 1, 0.5, 0.5, 0.5, 0.5, 0.5};
+  std::vector<double> r{1, 1, 1, 1};
+  r.resize(9, line_radius);
   // The line starts at (0,0,0), on the sheet's edge x = 0 but not at a sheet vertex.
   return MedialMesh(c, r, {{4, 5}, {5, 6}, {6, 7}, {7, 8}}, {{0, 1, 2}, {0, 2, 3}});
 }
@@ -130,7 +131,31 @@ TEST(StructureTags, NonManifoldSheetIsNeverThin)
   const MedialMesh manifold(c, r, {}, {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}});
   const StructureTags tags = computeStructureTags(manifold, probes({{5, 1, 0}}));
   EXPECT_EQ(tags.numThinParts(), 1);
+  // Its one probe is the whole shape, but ρ = √161.2 / 0.1 = 127 > 10: tagged all the same.
   EXPECT_EQ(tags.node_tag, std::vector<int>{1});
+}
+
+TEST(StructureTags, BarelyThinWholeShapeIsUntagged)
+{
+  // sheetAndLine(r): the line (L = 8) is thin for r < 1. Probes along it take tag 1, a probe in
+  // the fat sheet takes 0. With r = 0.9 (ρ = 8.9, barely thin, like a noisy bird's merged
+  // body-and-wings sheet at 8.2): 5 line probes of 6 hold 0.83 ≤ 0.85 of the nodes, the tag
+  // stays; 9 of 10 hold 0.9 of the shape: untagged. With r = 0.5 (ρ = 16 > 10; the dumbbell's
+  // sheet is 13, a cup's wall 24–34) the part keeps its tag however much of the shape it holds.
+  std::vector<Eigen::Vector3d> at{{-1, 0, 0.2}};
+  for (int k = 1; k <= 5; ++k)
+    at.emplace_back(1.0 * k + 0.5, 0.1, 0.0);
+  const StructureTags kept = computeStructureTags(sheetAndLine(0.9), probes(at));
+  EXPECT_DOUBLE_EQ(kept.tag_ratio[1], std::log2(8.0 / 0.9));
+  EXPECT_EQ(kept.node_tag, (std::vector<int>{0, 1, 1, 1, 1, 1}));
+  for (int k = 6; k <= 9; ++k)
+    at.emplace_back(0.7 * k - 2.0, -0.1, 0.0);
+  const StructureTags untagged = computeStructureTags(sheetAndLine(0.9), probes(at));
+  EXPECT_EQ(untagged.numThinParts(), 1);
+  EXPECT_EQ(untagged.node_tag, std::vector<int>(10, 0));
+  const StructureTags slender = computeStructureTags(sheetAndLine(), probes(at));
+  EXPECT_DOUBLE_EQ(slender.tag_ratio[1], 4.0);
+  EXPECT_EQ(slender.node_tag, (std::vector<int>{0, 1, 1, 1, 1, 1, 1, 1, 1, 1}));
 }
 
 TEST(StructureTags, EmptyStructuredMatTagsEverythingBulky)

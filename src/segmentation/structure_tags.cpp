@@ -22,6 +22,13 @@ constexpr double kDroppedLineRatio = 100.0; // line components above this take n
 constexpr double kCollinearBranch = 0.95;   // |cos| joining two lines through a branch point
 constexpr int kDensifySteps = 13;
 
+// Ours (a deviation from the reference; see computeStructureTags):
+// A thin part with more of the base nodes than this must clear the thin ratio by a margin to
+// count (a dumbbell's sheet: ρ ≈ 13, a cup's wall: 24–34); a noisy bird's merged body-and-wings
+// sheet has ρ = 8.2–8.3.
+constexpr double kWholeShapeFraction = 0.85;
+constexpr double kWholeShapeThinRatio = 10.0;
+
 /** A node of the structured MAT: a triangle or a pure edge (second sphere in v[1], v[2] = -1). */
 struct StructureNode
 {
@@ -242,6 +249,16 @@ computeStructureTags(const MedialMesh& structured, const MatGraph& base)
     if (point_tag[nearest] == 0)
       tags.node_axis[i] = axes[nearest];
   }
+  // A thin part is thin against the rest of the shape. One that covers nearly all of it while
+  // barely slender (a noisy bird whose body and wings merged into one manifold sheet) would only
+  // raise the threshold everywhere and let growth cross the part boundaries it should find.
+  std::vector<std::size_t> members(thin.size() + 1, 0);
+  for (int t : tags.node_tag)
+    ++members[t];
+  for (int& t : tags.node_tag)
+    if (t > 0 && double(members[t]) > kWholeShapeFraction * double(tags.node_tag.size()) &&
+        tags.tag_ratio[t] <= std::log2(kWholeShapeThinRatio))
+      t = 0;
   return tags;
 }
 

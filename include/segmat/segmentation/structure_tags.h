@@ -48,7 +48,11 @@ struct StructureTags
  * has other spheres: they belong to the body it grows from (a deviation from the reference).
  * A sheet component is thin when it is manifold and ρ = √A / r_max > 8. Every kept component is
  * densified (13 steps) and each base node takes the tag of the component owning the nearest
- * densified point to its centroid (ties: the first thin part).
+ * densified point to its centroid (ties: the first thin part). A thin part that would tag more
+ * than 85 % of the base nodes with ρ ≤ 10 tags none (a deviation from the reference): a part is
+ * thin against the rest of the shape, and a noisy bird whose body and wings merged into one
+ * barely slender sheet (ρ ≈ 8.2) would otherwise get the raised threshold everywhere; a
+ * dumbbell's sheet (ρ ≈ 13) and a cup's wall (ρ = 24–34) keep it. An untagged part keeps its tag_ratio entry.
  *
  * \param[in] structured the structured (very coarse) MAT; may be empty (all tags 0)
  * \param[in] base the base MAT graph whose nodes are tagged
