@@ -15,7 +15,8 @@ using namespace segmat;
 namespace {
 
 /** Structured MAT: a fat square sheet on x ∈ [−2, 0], y ∈ [−1, 1] (two triangles, radius 1) and a
- * thin line of 4 pure edges from (0,0,0) to (8,0,0) (radius 0.5 unless given), touching the sheet at sphere 0.
+ * thin line of 4 pure edges from (0,0,0) to (8,0,0) (radius 0.5 unless given), touching the
+ * sheet at sphere 0.
  *  - sheet: A = 4, r_max = 1 → ρ = √4 / 1 = 2 ≤ 8 → normal (tag 0);
  *  - line: L = 8, r_max = 0.5 → ρ = 16 > 8 → thin part 0, tag 1, tag_ratio = log2 16 = 4.
  * A line never joins a sheet, so sphere 0 (shared) does not merge them.

@@ -24,8 +24,8 @@ constexpr int kDensifySteps = 13;
 
 // Ours (a deviation from the reference; see computeStructureTags):
 // A thin part with more of the base nodes than this must clear the thin ratio by a margin to
-// count (a dumbbell's sheet: ρ ≈ 13, a cup's wall: 24–34); a noisy bird's merged body-and-wings
-// sheet has ρ = 8.2–8.3.
+// count (a dumbbell's sheet: ρ ≈ 13, a cup's wall: 24–34); a noisy bird's merged
+// body-and-wings sheet has ρ = 8.2–8.3.
 constexpr double kWholeShapeFraction = 0.85;
 constexpr double kWholeShapeThinRatio = 10.0;
 

@@ -52,7 +52,8 @@ struct StructureTags
  * than 85 % of the base nodes with ρ ≤ 10 tags none (a deviation from the reference): a part is
  * thin against the rest of the shape, and a noisy bird whose body and wings merged into one
  * barely slender sheet (ρ ≈ 8.2) would otherwise get the raised threshold everywhere; a
- * dumbbell's sheet (ρ ≈ 13) and a cup's wall (ρ = 24–34) keep it. An untagged part keeps its tag_ratio entry.
+ * dumbbell's sheet (ρ ≈ 13) and a cup's wall (ρ = 24–34) keep it. An untagged part keeps its
+ * tag_ratio entry; its nodes are bulky without a direction (node_axis stays zero).
  *
  * \param[in] structured the structured (very coarse) MAT; may be empty (all tags 0)
  * \param[in] base the base MAT graph whose nodes are tagged
