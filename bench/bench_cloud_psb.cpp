@@ -11,12 +11,16 @@
  *
  * Usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6,...] [--json] [--conditions abc]
  *        [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] [--reference-crease]
- *        [--noise-seeds N] [--dump DIR]
+ *        [--noise-seeds N] [--dump DIR] [--mesh-path]
  *   PSB_DIR defaults to ../shared/data/psb-dev (off/N.off, seg/Benchmark/N/N_k.seg).
  *   --dump DIR writes DIR/<model>_<a|b|c>.txt: "x y z label truth nx ny nz" per point (the
  *   cloud as segmented, our label, the first human's label, the sample's true normal).
  *   --noise-seeds N scores condition (c) as the mean over N noise draws (default 1): one noisy
  *   cloud's parts change with the draw by tenths of RI per model.
+ *   --mesh-path also segments each mesh with the mesh path (MeshSegmentation, defaults), clean
+ *   and with its vertices moved by the same Gaussian noise (0.5 % of the diagonal, the same seeds
+ *   and number of draws), and scores its face labels on the same clean points through their
+ *   source faces: what noise costs the method itself, not the cloud path.
  */
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"
@@ -25,6 +29,7 @@
 #include <segmat/io/off.h>
 #include <segmat/io/seg.h>
 #include <segmat/segmentation/cloud_segmentation.h>
+#include <segmat/segmentation/mesh_segmentation.h>
 
 #include <pcl/console/print.h>
 
@@ -35,6 +40,8 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <random>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -43,30 +50,7 @@ namespace {
 
 using segmat::test::SampledCloud;
 
-/// 1 − Rand index of two labelings of the same points (any integer labels).
-double
-randIndexError(const std::vector<int>& a, const std::vector<int>& b)
-{
-  const std::size_t n = a.size();
-  if (n < 2)
-    return 0.0;
-  std::map<int, double> ca, cb;
-  std::map<std::pair<int, int>, double> cab;
-  for (std::size_t i = 0; i < n; ++i) {
-    ca[a[i]] += 1;
-    cb[b[i]] += 1;
-    cab[{a[i], b[i]}] += 1;
-  }
-  auto pairs = [](double k) { return k * (k - 1) / 2; };
-  double sa = 0, sb = 0, sab = 0;
-  for (const auto& kv : ca)
-    sa += pairs(kv.second);
-  for (const auto& kv : cb)
-    sb += pairs(kv.second);
-  for (const auto& kv : cab)
-    sab += pairs(kv.second);
-  return (sa + sb - 2 * sab) / pairs(double(n));
-}
+using segmat::test::randIndexError;
 
 const char* kCategories[] = {"Human", "Cup",      "Glasses", "Airplane", "Ant",
                              "Chair", "Octopus",  "Table",   "Teddy",    "Hand",
@@ -90,7 +74,43 @@ struct Settings
   bool reference_crease = false;
   int noise_seeds = 1;  ///< condition (c): noise draws averaged
   std::string dump_dir; ///< when set: one point file per model and condition (see Usage)
+  bool mesh_path = false; ///< also score the mesh path, clean and with noisy vertices
 };
+
+/// The mesh path's face labels scored on \a sampled's points (1 − RI, mean over humans); with
+/// \a noise_seed > 0 the mesh's vertices first move by Gaussian noise of 0.5 % of its diagonal.
+Result
+runMeshPath(const segmat::TriangleMesh& mesh, const SampledCloud& sampled,
+            const std::vector<std::vector<int>>& truths, std::uint32_t noise_seed)
+{
+  auto input = std::make_shared<segmat::TriangleMesh>(mesh);
+  if (noise_seed > 0) {
+    Eigen::AlignedBox3d box;
+    for (const Eigen::Vector3d& v : input->vertices)
+      box.extend(v);
+    const double sigma = 0.005 * box.diagonal().norm();
+    std::mt19937 rng(noise_seed);
+    std::normal_distribution<double> normal(0.0, sigma);
+    for (Eigen::Vector3d& v : input->vertices)
+      for (int k = 0; k < 3; ++k)
+        v[k] += normal(rng);
+  }
+  segmat::MeshSegmentation seg;
+  seg.setInputMesh(input);
+  seg.setNumberOfThreads(1);
+  std::vector<int> face_labels;
+  const auto start = std::chrono::steady_clock::now();
+  const bool ok = seg.segment(face_labels);
+  Result r;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!ok)
+    face_labels.assign(mesh.numFaces(), 0);
+  r.parts = int(std::set<int>(face_labels.begin(), face_labels.end()).size());
+  const std::vector<int> labels = sampled.pointLabels(face_labels);
+  for (const auto& truth : truths)
+    r.ri += randIndexError(labels, truth) / double(truths.size());
+  return r;
+}
 
 Result
 run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int>>& truths,
@@ -191,6 +211,8 @@ main(int argc, char** argv)
       settings.smoothing = std::stoi(argv[++i]);
     else if (arg == "--noise-seeds" && i + 1 < argc)
       settings.noise_seeds = std::max(1, std::stoi(argv[++i]));
+    else if (arg == "--mesh-path")
+      settings.mesh_path = true;
     else if (arg == "--dump" && i + 1 < argc)
       settings.dump_dir = argv[++i];
     else if (arg == "--conditions" && i + 1 < argc)
@@ -200,7 +222,7 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json] "
                    "[--conditions abc] [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] "
-                   "[--reference-crease] [--noise-seeds N] [--dump DIR]\n";
+                   "[--reference-crease] [--noise-seeds N] [--dump DIR] [--mesh-path]\n";
       return 2;
     }
   }
@@ -222,6 +244,8 @@ main(int argc, char** argv)
   std::map<int, std::vector<std::vector<Result>>> by_category; // category → condition → results
   std::ostringstream rows;
   std::vector<std::vector<Result>> all(3);
+  std::ostringstream mesh_rows;          // --mesh-path: model, clean, noisy
+  std::vector<Result> mesh_clean, mesh_noisy;
   try {
     for (int id : models) {
       const std::string stem = std::to_string(id);
@@ -258,6 +282,25 @@ main(int argc, char** argv)
       }
       if (!json)
         std::cerr << line;
+      if (settings.mesh_path) {
+        const Result clean_mesh = runMeshPath(mesh, clean, truths, 0);
+        Result noisy_mesh;
+        for (int k = 0; k < settings.noise_seeds; ++k) {
+          const Result once = runMeshPath(mesh, clean, truths, std::uint32_t(2 + k));
+          noisy_mesh.ri += once.ri / settings.noise_seeds;
+          noisy_mesh.parts += once.parts;
+          noisy_mesh.seconds += once.seconds / settings.noise_seeds;
+        }
+        noisy_mesh.parts = (noisy_mesh.parts + settings.noise_seeds / 2) / settings.noise_seeds;
+        mesh_clean.push_back(clean_mesh);
+        mesh_noisy.push_back(noisy_mesh);
+        std::snprintf(line, sizeof line, "| %d | %s | %.4f | %.4f | %d/%d |\n", id,
+                      kCategories[category], clean_mesh.ri, noisy_mesh.ri, clean_mesh.parts,
+                      noisy_mesh.parts);
+        mesh_rows << line;
+        if (!json)
+          std::cerr << "mesh path " << line;
+      }
     }
   }
   catch (const segmat::Error& e) {
@@ -300,6 +343,15 @@ main(int argc, char** argv)
                 mean(kv.second[0], ri), mean(kv.second[1], ri), mean(kv.second[2], ri));
   std::printf("| **all** | %zu | **%.4f** | **%.4f** | **%.4f** |\n", all[0].size(),
               mean(all[0], ri), mean(all[1], ri), mean(all[2], ri));
+  if (settings.mesh_path)
+    std::cout << "\nMesh path on the same points (face labels through the source faces)\n\n"
+              << "| model | category | RI mesh | RI mesh, noisy vertices | parts clean/noisy |\n"
+                 "|---|---|---|---|---|\n"
+              << mesh_rows.str();
+  if (settings.mesh_path)
+    std::printf("| **all** | %zu | **%.4f** | **%.4f** | %.1f/%.1f |\n", mesh_clean.size(),
+                mean(mesh_clean, ri), mean(mesh_noisy, ri), mean(mesh_clean, nparts),
+                mean(mesh_noisy, nparts));
   std::printf("\nmean parts a/b/c: %.1f / %.1f / %.1f; mean seconds a/b/c: %.2f / %.2f / %.2f\n",
               mean(all[0], nparts), mean(all[1], nparts), mean(all[2], nparts), mean(all[0], secs),
               mean(all[1], secs), mean(all[2], secs));

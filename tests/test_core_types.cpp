@@ -72,6 +72,22 @@ TEST(MedialMesh, NormalisesAndDerivesIncidence)
   EXPECT_DOUBLE_EQ(m.centerBoundingBoxDiagonal(), std::sqrt(8.0));
 }
 
+TEST(MedialMesh, CountsConnectedComponents)
+{
+  // A triangle 0 1 2 with 3 hanging on the pure edge 2–3; a separate pure edge 4–5; 6 alone; a
+  // triangle 7 8 9 given without its sides (they are added, so it is one component).
+  std::vector<Eigen::Vector3d> c(10, Eigen::Vector3d::Zero());
+  for (int i = 0; i < 10; ++i)
+    c[i].x() = i;
+  const std::vector<double> r(10, 0.5);
+  EXPECT_EQ(MedialMesh(c, r, {{2, 3}, {4, 5}}, {{0, 1, 2}, {7, 8, 9}}).numConnectedComponents(),
+            4u); // {0 1 2 3} {4 5} {6} {7 8 9}
+  EXPECT_EQ(MedialMesh(c, r, {{2, 3}, {4, 5}, {3, 4}, {5, 6}, {6, 7}}, {{0, 1, 2}, {7, 8, 9}})
+                .numConnectedComponents(),
+            1u);
+  EXPECT_EQ(MedialMesh().numConnectedComponents(), 0u);
+}
+
 TEST(MedialMesh, RejectsBadInput)
 {
   EXPECT_THROW(MedialMesh({{0, 0, 0}}, {-1.0}, {}, {}), Error);

@@ -6,6 +6,8 @@
 #include <segmat/geometry/medial_mesh.h>
 #include "point_bounds.h"
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -161,6 +163,21 @@ double
 MedialMesh::maxRadius() const
 {
   return radii_.empty() ? 0.0 : *std::max_element(radii_.begin(), radii_.end());
+}
+
+std::size_t
+MedialMesh::numConnectedComponents() const
+{
+  // Every triangle's sides are edges of the mesh, so edges alone decide connectivity.
+  boost::disjoint_sets_with_storage<> sets(numVertices());
+  for (std::size_t v = 0; v < numVertices(); ++v)
+    sets.make_set(v);
+  for (const Eigen::Vector2i& e : edges_)
+    sets.union_set(e[0], e[1]);
+  std::size_t count = 0;
+  for (std::size_t v = 0; v < numVertices(); ++v)
+    count += sets.find_set(v) == v;
+  return count;
 }
 
 } // namespace segmat

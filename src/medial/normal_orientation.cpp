@@ -49,6 +49,16 @@ NormalOrientation::orient(pcl::PointCloud<pcl::PointNormal>& cloud)
     }
   }
 
+  // n_j reflected in the plane halfway between p_i and p_j (the mirror relation).
+  auto mirrored = [&cloud](int i, int j, const Eigen::Vector3f& nj) -> Eigen::Vector3f {
+    const Eigen::Vector3f d = cloud[j].getVector3fMap() - cloud[i].getVector3fMap();
+    const float len = d.norm();
+    if (!(len > 0.0f))
+      return nj;
+    const Eigen::Vector3f u = d / len;
+    return nj - 2.0f * u.dot(nj) * u;
+  };
+
   // Symmetric k-NN graph, each undirected edge once, weighted.
   struct Edge
   {
@@ -74,12 +84,17 @@ NormalOrientation::orient(pcl::PointCloud<pcl::PointNormal>& cloud)
         if (j == i)
           continue;
         const Eigen::Vector3f nj = cloud[j].getNormalVector3fMap().normalized();
-        float w = 1.0f - std::abs(ni.dot(nj));
-        if (tangent_plane_term_) {
-          const Eigen::Vector3f d = cloud[j].getVector3fMap() - cloud[i].getVector3fMap();
-          const float len = d.norm();
-          if (len > 0.0f)
-            w += std::abs(ni.dot(d)) * std::abs(nj.dot(d)) / (len * len);
+        float w;
+        if (mirror_relation_)
+          w = 1.0f - std::abs(ni.dot(mirrored(i, j, nj)));
+        else {
+          w = 1.0f - std::abs(ni.dot(nj));
+          if (tangent_plane_term_) {
+            const Eigen::Vector3f d = cloud[j].getVector3fMap() - cloud[i].getVector3fMap();
+            const float len = d.norm();
+            if (len > 0.0f)
+              w += std::abs(ni.dot(d)) * std::abs(nj.dot(d)) / (len * len);
+          }
         }
         edges.push_back({w, std::min(i, j), std::max(i, j)});
       }
@@ -159,7 +174,8 @@ NormalOrientation::orient(pcl::PointCloud<pcl::PointNormal>& cloud)
         if (reached[w])
           continue;
         reached[w] = 1;
-        flip[w] = nv.dot(cloud[w].getNormalVector3fMap()) < 0.0f;
+        const Eigen::Vector3f nw = cloud[w].getNormalVector3fMap();
+        flip[w] = nv.dot(mirror_relation_ ? mirrored(v, w, nw) : nw) < 0.0f;
         queue.push(w);
       }
     }

@@ -80,6 +80,13 @@ sampleMesh(const TriangleMesh& mesh, std::size_t count, std::uint32_t seed = 1);
 void
 addGaussianNoise(SampledCloud& cloud, double fraction, std::uint32_t seed = 2);
 
+/** \brief 1 − Rand index of two labelings of the same points (any integer labels), over point
+ * pairs with the textbook divisor n(n−1)/2; 0 for fewer than two points; throws
+ * std::invalid_argument when the sizes differ.
+ */
+double
+randIndexError(const std::vector<int>& a, const std::vector<int>& b);
+
 /** \brief Two unit balls centred at (±3, 0, 0) joined by a tube of radius 0.3 along x.
  * Parts: 0 left ball, 1 tube, 2 right ball.
  */

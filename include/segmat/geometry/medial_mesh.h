@@ -75,6 +75,8 @@ public:
   double centerBoundingBoxDiagonal() const;
   /** \brief Largest radius (0 when empty). */
   double maxRadius() const;
+  /** \brief Number of connected components (spheres joined by edges; an isolated sphere is one). */
+  std::size_t numConnectedComponents() const;
 
 private:
   std::vector<Eigen::Vector3d> centers_;

@@ -67,6 +67,27 @@ public:
     return tangent_plane_term_;
   }
 
+  /** \brief Relate neighbours by the reflection in their bisector plane (default false).
+   *
+   * Hoppe's relation calls n_i and n_j consistent when n_i·n_j > 0. The mirror relation compares
+   * n_i with R n_j, R = I − 2 d̂d̂ᵀ the reflection in the plane halfway between p_i and p_j
+   * (weight 1 − |n_i·R n_j|, n_j flipped when n_i·R n_j < 0). Both agree between neighbours on
+   * one sheet (d̂ ⊥ n); the mirror relation is also exact on spheres, symmetric creases and
+   * across a plate thinner than the neighbourhood, whose two sides Hoppe's relation orients
+   * alike. The tangent-plane term is not added (it only patches that case). */
+  void
+  setMirrorRelationFlag(bool flag)
+  {
+    mirror_relation_ = flag;
+  }
+
+  /** \brief Whether neighbours are related by the reflection in their bisector plane. */
+  bool
+  getMirrorRelationFlag() const
+  {
+    return mirror_relation_;
+  }
+
   /** \brief Reverse a component whose normals point inward on the whole (default true). */
   void
   setOutwardCheckFlag(bool flag)
@@ -108,6 +129,7 @@ private:
   int k_;
   bool tangent_plane_term_;
   bool outward_check_;
+  bool mirror_relation_ = false;
   std::size_t components_ = 0;
   std::size_t reversed_ = 0;
 };

@@ -54,6 +54,18 @@ medialMeshGraph(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& working,
                 MatGraph::Ptr& graph, StructureTags& tags,
                 std::vector<std::pair<std::string, double>>& stage_seconds);
 
+/** \brief When the base MAT computed from estimated normals falls apart (more than 8
+ * components), orient \a working's normals again with the mirror relation
+ * (NormalOrientation::setMirrorRelationFlag) and keep that medial mesh when it has at most 3/4
+ * of the components. \a working, the medial meshes, \a graph and \a tags are replaced when the
+ * retry is kept; its seconds are added to "medial" and "graph" either way.
+ * \return true when the retry was kept */
+bool
+retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working, int orientation_k,
+                                 CloudMedialMeshEstimation& estimation, MedialMesh& base,
+                                 MedialMesh& structured, MatGraph::Ptr& graph, StructureTags& tags,
+                                 std::vector<std::pair<std::string, double>>& stage_seconds);
+
 /** \brief What CloudSegmentation does once the MAT graph exists (untyped core).
  * \param[in] graph the MAT graph (medial mesh or meso-skeleton)
  * \param[in] tags its structure tags (empty: every node bulky)
@@ -186,6 +198,25 @@ public:
   getUseInputNormalsFlag() const
   {
     return skeleton_estimation_.getParameters().use_input_normals;
+  }
+
+  /** \brief With estimated normals and the medial mesh: when the base MAT falls apart into
+   * more than 8 components (a solid's medial axis is connected; clean clouds give 1–4), orient
+   * the normals again with the mirror relation (NormalOrientation::setMirrorRelationFlag) and
+   * keep that medial mesh if it has at most 3/4 of the components (default true). Noise on a
+   * plate thinner than the orientation neighbourhood flips whole patches of normals; the inside
+   * test then cuts the plate's medial sheet to pieces. */
+  void
+  setFragmentedMatRetryFlag(bool flag)
+  {
+    fragmented_mat_retry_ = flag;
+  }
+
+  /** \brief Whether a fragmented base MAT is retried with mirror-related normals. */
+  bool
+  getFragmentedMatRetryFlag() const
+  {
+    return fragmented_mat_retry_;
   }
 
   /** \brief Test visibility inside the medial balls before merging parts (default true). */
@@ -342,6 +373,7 @@ private:
   CloudMedialAxis medial_axis_ = CloudMedialAxis::MedialMesh;
   int k_ = 10;
   bool visibility_ = true;
+  bool fragmented_mat_retry_ = true;
 
   MedialMesh base_, structured_;
   pcl::PointCloud<pcl::PointNormal>::Ptr working_;

@@ -75,6 +75,9 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
       input_to_working_ = detail::inputToWorking(input_->size(), *indices_, copy_to_working);
       medial_ok = detail::medialMeshGraph(working_, mesh_estimation_, base_, structured_, graph,
                                           tags, stage_seconds_);
+      if (medial_ok && stats.normals_estimated && fragmented_mat_retry_)
+        detail::retryFragmentedWithMirrorNormals(working_, params.orientation_k, mesh_estimation_,
+                                                 base_, structured_, graph, tags, stage_seconds_);
     }
   }
   else {
