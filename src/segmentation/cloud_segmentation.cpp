@@ -12,7 +12,6 @@
 
 #include <pcl/console/print.h>
 
-
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -67,8 +66,9 @@ retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working
                                  MedialMesh& structured, MatGraph::Ptr& graph, StructureTags& tags,
                                  std::vector<std::pair<std::string, double>>& stage_seconds)
 {
-  // A solid's medial axis is connected; clean clouds leave 1–4 components (a few stray
-  // spheres), a plate whose normals flipped in patches leaves dozens (noisy PSB chair 101: 69).
+  // A solid's medial axis is connected; clean clouds leave a few stray spheres (no clean
+  // psb-dev cloud has more than 8 components), a plate whose normals flipped in patches leaves
+  // dozens (noisy PSB chair 101: 69).
   constexpr std::size_t kFragmented = 8;
   const std::size_t components = base.numConnectedComponents();
   if (components <= kFragmented)
@@ -85,7 +85,7 @@ retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working
   const bool ok = orientation.orient(*mirrored) &&
                   medialMeshGraph(mirrored, estimation, other_base, other_structured, other_graph,
                                   other_tags, other_seconds);
-  const double orient_seconds =
+  const double retry_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   // Only a clearly less fragmented axis replaces the first: near-ties swap one noisy answer for
   // another (noisy octopus 126: 85 → 84 components, and a worse score).
@@ -104,10 +104,11 @@ retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working
         mine.second += stage.second;
         counted += stage.second;
       }
-  // The re-orientation counts as medial time (the first orientation is preprocessing's).
+  // What the retry's own stages did not time is the re-orientation: medial time too (the first
+  // orientation is preprocessing's).
   for (auto& mine : stage_seconds)
     if (mine.first == "medial")
-      mine.second += std::max(0.0, orient_seconds - counted);
+      mine.second += std::max(0.0, retry_seconds - counted);
   return keep;
 }
 

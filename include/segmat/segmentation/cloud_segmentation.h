@@ -201,7 +201,8 @@ public:
   }
 
   /** \brief With estimated normals and the medial mesh: when the base MAT falls apart into
-   * more than 8 components (a solid's medial axis is connected; clean clouds give 1–4), orient
+   * more than 8 components (a solid's medial axis is connected; no clean psb-dev cloud has more
+   * than 8), orient
    * the normals again with the mirror relation (NormalOrientation::setMirrorRelationFlag) and
    * keep that medial mesh if it has at most 3/4 of the components (default true). Noise on a
    * plate thinner than the orientation neighbourhood flips whole patches of normals; the inside
