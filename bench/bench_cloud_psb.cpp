@@ -11,7 +11,7 @@
  *
  * Usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6,...] [--json] [--conditions abc]
  *        [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] [--reference-crease]
- *        [--noise-seeds N] [--dump DIR] [--mesh-path]
+ *        [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility]
  *   PSB_DIR defaults to ../shared/data/psb-dev (off/N.off, seg/Benchmark/N/N_k.seg).
  *   --dump DIR writes DIR/<model>_<a|b|c>.txt: "x y z label truth nx ny nz" per point (the
  *   cloud as segmented, our label, the first human's label, the sample's true normal).
@@ -21,6 +21,7 @@
  *   and with its vertices moved by the same Gaussian noise (0.5 % of the diagonal, the same seeds
  *   and number of draws), and scores its face labels on the same clean points through their
  *   source faces: what noise costs the method itself, not the cloud path.
+ *   --no-visibility merges parts without the ball-union visibility test (setVisibilityFlag).
  */
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"
@@ -75,6 +76,7 @@ struct Settings
   int noise_seeds = 1;  ///< condition (c): noise draws averaged
   std::string dump_dir; ///< when set: one point file per model and condition (see Usage)
   bool mesh_path = false; ///< also score the mesh path, clean and with noisy vertices
+  bool visibility = true; ///< merging tests visibility in the ball union
 };
 
 /// The mesh path's face labels scored on \a sampled's points (1 − RI, mean over humans); with
@@ -120,6 +122,7 @@ run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int
   seg.setInputCloud(sampled.toPointNormal());
   seg.setUseInputNormalsFlag(normals);
   seg.setNumberOfThreads(1);
+  seg.setVisibilityFlag(settings.visibility);
   if (settings.meso_skeleton)
     seg.setMedialAxis(segmat::CloudMedialAxis::MesoSkeleton);
   if (settings.smoothing >= 0) {
@@ -211,6 +214,8 @@ main(int argc, char** argv)
       settings.smoothing = std::stoi(argv[++i]);
     else if (arg == "--noise-seeds" && i + 1 < argc)
       settings.noise_seeds = std::max(1, std::stoi(argv[++i]));
+    else if (arg == "--no-visibility")
+      settings.visibility = false;
     else if (arg == "--mesh-path")
       settings.mesh_path = true;
     else if (arg == "--dump" && i + 1 < argc)
@@ -222,7 +227,7 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json] "
                    "[--conditions abc] [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] "
-                   "[--reference-crease] [--noise-seeds N] [--dump DIR] [--mesh-path]\n";
+                   "[--reference-crease] [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility]\n";
       return 2;
     }
   }
