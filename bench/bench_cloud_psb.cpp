@@ -41,7 +41,6 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -86,17 +85,8 @@ runMeshPath(const segmat::TriangleMesh& mesh, const SampledCloud& sampled,
             const std::vector<std::vector<int>>& truths, std::uint32_t noise_seed)
 {
   auto input = std::make_shared<segmat::TriangleMesh>(mesh);
-  if (noise_seed > 0) {
-    Eigen::AlignedBox3d box;
-    for (const Eigen::Vector3d& v : input->vertices)
-      box.extend(v);
-    const double sigma = 0.005 * box.diagonal().norm();
-    std::mt19937 rng(noise_seed);
-    std::normal_distribution<double> normal(0.0, sigma);
-    for (Eigen::Vector3d& v : input->vertices)
-      for (int k = 0; k < 3; ++k)
-        v[k] += normal(rng);
-  }
+  if (noise_seed > 0)
+    segmat::test::addGaussianNoise(*input, 0.005, noise_seed);
   segmat::MeshSegmentation seg;
   seg.setInputMesh(input);
   seg.setNumberOfThreads(1);

@@ -82,11 +82,12 @@ retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working
   StructureTags other_tags;
   std::vector<std::pair<std::string, double>> other_seconds;
   const auto start = std::chrono::steady_clock::now();
-  const bool ok = orientation.orient(*mirrored) &&
-                  medialMeshGraph(mirrored, estimation, other_base, other_structured, other_graph,
-                                  other_tags, other_seconds);
-  const double retry_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  bool ok = orientation.orient(*mirrored);
+  // The re-orientation counts as medial time (the first orientation is preprocessing's).
+  other_seconds.emplace_back(
+      "medial", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  ok = ok && medialMeshGraph(mirrored, estimation, other_base, other_structured, other_graph,
+                             other_tags, other_seconds);
   // Only a clearly less fragmented axis replaces the first: near-ties swap one noisy answer for
   // another (noisy octopus 126: 85 → 84 components, and a worse score).
   const bool keep = ok && 4 * other_base.numConnectedComponents() <= 3 * components;
@@ -97,18 +98,10 @@ retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working
     graph = other_graph;
     tags = std::move(other_tags);
   }
-  double counted = 0.0;
   for (const auto& stage : other_seconds)
     for (auto& mine : stage_seconds)
-      if (mine.first == stage.first) {
+      if (mine.first == stage.first)
         mine.second += stage.second;
-        counted += stage.second;
-      }
-  // What the retry's own stages did not time is the re-orientation: medial time too (the first
-  // orientation is preprocessing's).
-  for (auto& mine : stage_seconds)
-    if (mine.first == "medial")
-      mine.second += std::max(0.0, retry_seconds - counted);
   return keep;
 }
 

@@ -132,21 +132,35 @@ sampleMesh(const TriangleMesh& mesh, std::size_t count, std::uint32_t seed)
   return cloud;
 }
 
+/// Moves every point by Gaussian noise of sigma = fraction × the points' bounding-box diagonal.
+template <typename Vector3>
 void
-addGaussianNoise(SampledCloud& cloud, double fraction, std::uint32_t seed)
+addGaussianNoiseTo(std::vector<Vector3>& points, double fraction, std::uint32_t seed)
 {
-  if (cloud.points.empty())
+  if (points.empty())
     return;
-  Eigen::Vector3f lo = cloud.points.front(), hi = lo;
-  for (const Eigen::Vector3f& p : cloud.points) {
+  Vector3 lo = points.front(), hi = lo;
+  for (const Vector3& p : points) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  const double sigma = fraction * (hi - lo).cast<double>().norm();
+  const double sigma = fraction * (hi - lo).template cast<double>().norm();
   std::mt19937 rng(seed);
-  for (Eigen::Vector3f& p : cloud.points)
+  for (Vector3& p : points)
     for (int k = 0; k < 3; ++k)
-      p[k] += static_cast<float>(sigma * standardNormal(rng));
+      p[k] += static_cast<typename Vector3::Scalar>(sigma * standardNormal(rng));
+}
+
+void
+addGaussianNoise(SampledCloud& cloud, double fraction, std::uint32_t seed)
+{
+  addGaussianNoiseTo(cloud.points, fraction, seed);
+}
+
+void
+addGaussianNoise(TriangleMesh& mesh, double fraction, std::uint32_t seed)
+{
+  addGaussianNoiseTo(mesh.vertices, fraction, seed);
 }
 
 SampledCloud

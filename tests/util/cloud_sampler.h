@@ -80,6 +80,10 @@ sampleMesh(const TriangleMesh& mesh, std::size_t count, std::uint32_t seed = 1);
 void
 addGaussianNoise(SampledCloud& cloud, double fraction, std::uint32_t seed = 2);
 
+/** \brief The same noise on a mesh's vertices (sigma from the vertices' bounding box). */
+void
+addGaussianNoise(TriangleMesh& mesh, double fraction, std::uint32_t seed = 2);
+
 /** \brief 1 − Rand index of two labelings of the same points (any integer labels), over point
  * pairs with the textbook divisor n(n−1)/2; 0 for fewer than two points; throws
  * std::invalid_argument when the sizes differ.
