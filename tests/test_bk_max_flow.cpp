@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
+#include <queue>
 #include <random>
 
 using namespace segmat;
@@ -118,6 +120,93 @@ TEST(BkMaxFlow, RandomNetworksGiveTheSmallestMinimumCut)
     // A second solve from the same capacities gives the same answer.
     ASSERT_DOUBLE_EQ(flow.solve(), best) << "trial " << trial;
     EXPECT_EQ(sourceSet(flow, net.n), smallest) << "trial " << trial;
+  }
+}
+
+namespace {
+
+// Edmonds–Karp on a dense capacity matrix; node n is the source, n + 1 the sink.
+double
+edmondsKarp(const Network& net)
+{
+  const int n = net.n, s = n, t = n + 1, size = n + 2;
+  std::vector<std::vector<double>> cap(size, std::vector<double>(size, 0.0));
+  for (int i = 0; i < n; ++i) {
+    cap[s][i] += net.from_source[i];
+    cap[i][t] += net.to_sink[i];
+  }
+  for (std::size_t e = 0; e < net.pairs.size(); ++e) {
+    cap[net.pairs[e].first][net.pairs[e].second] += net.forward[e];
+    cap[net.pairs[e].second][net.pairs[e].first] += net.backward[e];
+  }
+  double flow = 0.0;
+  for (;;) {
+    std::vector<int> from(size, -1);
+    from[s] = s;
+    std::queue<int> queue;
+    queue.push(s);
+    while (!queue.empty() && from[t] < 0) {
+      const int u = queue.front();
+      queue.pop();
+      for (int v = 0; v < size; ++v)
+        if (from[v] < 0 && cap[u][v] > 0.0) {
+          from[v] = u;
+          queue.push(v);
+        }
+    }
+    if (from[t] < 0)
+      return flow;
+    double b = std::numeric_limits<double>::infinity();
+    for (int v = t; v != s; v = from[v])
+      b = std::min(b, cap[from[v]][v]);
+    for (int v = t; v != s; v = from[v]) {
+      cap[from[v]][v] -= b;
+      cap[v][from[v]] += b;
+    }
+    flow += b;
+  }
+}
+
+} // namespace
+
+TEST(BkMaxFlow, LargerGridNetworksMatchEdmondsKarp)
+{
+  // 12 × 12 grids with diagonals (k-NN-like degree) and both terminals, as in expansion moves
+  // on a cloud: long augmenting paths, many orphans, and the tree-distance heuristics at work.
+  std::mt19937 rng(7u);
+  const int side = 12;
+  for (int trial = 0; trial < 20; ++trial) {
+    Network net;
+    net.n = side * side;
+    for (int i = 0; i < net.n; ++i) {
+      const double d = static_cast<double>(static_cast<int>(rng() % 41) - 20);
+      net.from_source.push_back(d > 0.0 ? d : 0.0);
+      net.to_sink.push_back(d < 0.0 ? -d : 0.0);
+    }
+    for (int y = 0; y < side; ++y)
+      for (int x = 0; x < side; ++x)
+        for (const auto& step : {std::pair<int, int>{1, 0}, {0, 1}, {1, 1}, {-1, 1}}) {
+          const int xx = x + step.first, yy = y + step.second;
+          if (xx < 0 || xx >= side || yy >= side)
+            continue;
+          net.pairs.emplace_back(y * side + x, yy * side + xx);
+          net.forward.push_back(static_cast<double>(rng() % (5 + trial)));
+          net.backward.push_back(static_cast<double>(rng() % (5 + trial)));
+        }
+    BkMaxFlow flow(net.n, net.pairs);
+    net.load(flow);
+    const double value = flow.solve();
+    EXPECT_DOUBLE_EQ(value, edmondsKarp(net)) << "trial " << trial;
+    // The reported side is a cut of exactly that value.
+    double cut = 0.0;
+    for (int i = 0; i < net.n; ++i)
+      cut += flow.inSourceSet(i) ? net.to_sink[i] : net.from_source[i];
+    for (std::size_t e = 0; e < net.pairs.size(); ++e) {
+      const bool a = flow.inSourceSet(net.pairs[e].first), b = flow.inSourceSet(net.pairs[e].second);
+      cut += (a && !b) ? net.forward[e] : 0.0;
+      cut += (b && !a) ? net.backward[e] : 0.0;
+    }
+    EXPECT_DOUBLE_EQ(cut, value) << "trial " << trial;
   }
 }
 
