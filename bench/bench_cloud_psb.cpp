@@ -77,6 +77,7 @@ struct Settings
   bool mesh_path = false; ///< also score the mesh path, clean and with noisy vertices
   bool visibility = true; ///< merging tests visibility in the ball union
   double eta = -1.0;      ///< minimal region fraction η (< 0: the library's)
+  double omega = -1.0;    ///< transfer smoothness ω (< 0: the library's)
 };
 
 /// The mesh path's face labels scored on \a sampled's points (1 − RI, mean over humans); with
@@ -116,6 +117,8 @@ run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int
   seg.setVisibilityFlag(settings.visibility);
   if (settings.eta >= 0.0)
     seg.setMinRegionFraction(settings.eta);
+  if (settings.omega >= 0.0)
+    seg.setSmoothnessWeight(settings.omega);
   if (settings.meso_skeleton)
     seg.setMedialAxis(segmat::CloudMedialAxis::MesoSkeleton);
   if (settings.smoothing >= 0) {
@@ -209,6 +212,8 @@ main(int argc, char** argv)
       settings.noise_seeds = std::max(1, std::stoi(argv[++i]));
     else if (arg == "--eta" && i + 1 < argc)
       settings.eta = std::stod(argv[++i]);
+    else if (arg == "--omega" && i + 1 < argc)
+      settings.omega = std::stod(argv[++i]);
     else if (arg == "--no-visibility")
       settings.visibility = false;
     else if (arg == "--mesh-path")
@@ -222,7 +227,7 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json] "
                    "[--conditions abc] [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] "
-                   "[--reference-crease] [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F]\n";
+                   "[--reference-crease] [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F]\n";
       return 2;
     }
   }
