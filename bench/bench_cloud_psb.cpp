@@ -11,7 +11,7 @@
  *
  * Usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6,...] [--json] [--conditions abc]
  *        [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] [--reference-crease]
- *        [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility]
+ *        [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F]
  *   PSB_DIR defaults to ../shared/data/psb-dev (off/N.off, seg/Benchmark/N/N_k.seg).
  *   --dump DIR writes DIR/<model>_<a|b|c>.txt: "x y z label truth nx ny nz" per point (the
  *   cloud as segmented, our label, the first human's label, the sample's true normal).
@@ -22,6 +22,8 @@
  *   and number of draws), and scores its face labels on the same clean points through their
  *   source faces: what noise costs the method itself, not the cloud path.
  *   --no-visibility merges parts without the ball-union visibility test (setVisibilityFlag).
+ *   --eta F / --omega F set the minimal region fraction η / the transfer smoothness ω
+ *   (setMinRegionFraction / setSmoothnessWeight; defaults: the library's).
  */
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"
@@ -348,15 +350,15 @@ main(int argc, char** argv)
                 mean(kv.second[0], ri), mean(kv.second[1], ri), mean(kv.second[2], ri));
   std::printf("| **all** | %zu | **%.4f** | **%.4f** | **%.4f** |\n", all[0].size(),
               mean(all[0], ri), mean(all[1], ri), mean(all[2], ri));
-  if (settings.mesh_path)
+  if (settings.mesh_path) {
     std::cout << "\nMesh path on the same points (face labels through the source faces)\n\n"
               << "| model | category | RI mesh | RI mesh, noisy vertices | parts clean/noisy |\n"
                  "|---|---|---|---|---|\n"
               << mesh_rows.str();
-  if (settings.mesh_path)
     std::printf("| **all** | %zu | **%.4f** | **%.4f** | %.1f/%.1f |\n", mesh_clean.size(),
                 mean(mesh_clean, ri), mean(mesh_noisy, ri), mean(mesh_clean, nparts),
                 mean(mesh_noisy, nparts));
+  }
   std::printf("\nmean parts a/b/c: %.1f / %.1f / %.1f; mean seconds a/b/c: %.2f / %.2f / %.2f\n",
               mean(all[0], nparts), mean(all[1], nparts), mean(all[2], nparts), mean(all[0], secs),
               mean(all[1], secs), mean(all[2], secs));
