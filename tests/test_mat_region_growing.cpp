@@ -616,3 +616,65 @@ TEST(MatRegionGrowing, ManyPatchesAndNonFiniteInput)
   // A NaN cost never grows: node 0 cannot reach node 1 (NaN radius) by growing.
   EXPECT_EQ(r.coarse[0], std::vector<int>{0});
 }
+
+namespace {
+
+/** Cloud-path chain: `ends` medial points of radius 0.05 spaced 0.2 along x with normal z, then
+ * `middle` points whose normals alternate x / y, then `ends` more like the first. Within an end
+ * the cost is 0; any step into or inside the middle costs C_θ = 0.05·acos(0)/π = 0.025 > δ0, so
+ * the middle points are leftovers. Equal radii: EMD_max = 0, nothing merges. Balls of 0.05 at
+ * spacing 0.2 swallow nothing.
+ */
+std::vector<int>
+chainLabels(int ends, int middle, std::vector<int>& tiny)
+{
+  std::vector<Eigen::Vector3d> c;
+  std::vector<MatNode> nodes;
+  const int n = 2 * ends + middle;
+  for (int k = 0; k < n; ++k) {
+    MatNode p;
+    p.centroid = Eigen::Vector3d(0.2 * k, 0, 0);
+    const bool in_middle = k >= ends && k < ends + middle;
+    p.normal = !in_middle ? Eigen::Vector3d(0, 0, 1)
+                          : ((k - ends) % 2 == 0 ? Eigen::Vector3d(1, 0, 0)
+                                                 : Eigen::Vector3d(0, 1, 0));
+    p.mean_radius = 0.05;
+    p.v = Eigen::Vector3i(k, -1, -1);
+    c.push_back(p.centroid);
+    nodes.push_back(p);
+  }
+  std::vector<std::vector<int>> adj(n);
+  for (int k = 0; k + 1 < n; ++k)
+    adj[k].push_back(k + 1);
+  MatRegionGrowing grower;
+  grower.setInputGraph(std::make_shared<MatGraph>(c, std::vector<double>(n, 0.05), nodes, adj));
+  grower.setMinRegionFraction(4.0 / n); // regions need 4 nodes: single middle points do not count
+  std::vector<pcl::PointIndices> parts;
+  EXPECT_TRUE(grower.extract(parts));
+  tiny = grower.getTinyPatchSizes();
+  return grower.getNodeLabels();
+}
+
+} // namespace
+
+TEST(MatRegionGrowing, LargeLeftoverIsSharedOutAndSmallOneAbsorbedWhole)
+{
+  // 100 + 100 leftover + 100 nodes: the leftover (1/3 of the graph, over the 5 % limit) is split
+  // by breadth-first distance: its first 50 nodes join the first end, the last 50 the second.
+  // Absorbed whole (the reference) it would have gone to one end: 200 / 100 nodes.
+  std::vector<int> tiny;
+  const std::vector<int> labels = chainLabels(100, 100, tiny);
+  EXPECT_EQ(tiny, std::vector<int>{100});
+  ASSERT_EQ(labels.size(), 300u);
+  const std::vector<int> first(labels.begin(), labels.begin() + 150);
+  const std::vector<int> second(labels.begin() + 150, labels.end());
+  EXPECT_EQ(first, std::vector<int>(150, labels.front()));
+  EXPECT_EQ(second, std::vector<int>(150, labels.back()));
+  EXPECT_NE(labels.front(), labels.back());
+
+  // 150 + 2 + 150 nodes: a 2-node leftover is under 5 % of 302 nodes (15) and joins one end whole.
+  const std::vector<int> small = chainLabels(150, 2, tiny);
+  EXPECT_EQ(tiny, std::vector<int>{2});
+  EXPECT_EQ(small[150], small[151]);
+  EXPECT_NE(small.front(), small.back());
+}
