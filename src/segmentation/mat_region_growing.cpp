@@ -204,7 +204,7 @@ splitLargeLeftovers(const MatGraph& g, std::vector<std::vector<int>>& tiny,
     for (int i : t)
       owner[i] = -1;
   }
-  if (keep.size() == tiny.size()) { // nothing to split (every clean shape so far)
+  if (keep.size() == tiny.size()) { // nothing to split (no clean psb-dev shape reaches the limit)
     tiny = std::move(keep);
     return;
   }
