@@ -193,9 +193,9 @@ splitLargeLeftovers(const MatGraph& g, std::vector<std::vector<int>>& tiny,
                     std::vector<Patch>& patches, std::size_t min_size)
 {
   const int n = static_cast<int>(g.numNodes());
-  // owner: -2 not in a leftover being split, -1 not reached yet, -3 unreached and collected
+  // owner: -2 not in a leftover being split, -1 not reached yet, else the patch
   std::vector<int> owner(n, -2);
-  std::vector<std::vector<int>> keep;
+  std::vector<std::vector<int>> keep, large;
   for (auto& t : tiny) {
     if (t.size() < min_size) {
       keep.push_back(std::move(t));
@@ -203,44 +203,33 @@ splitLargeLeftovers(const MatGraph& g, std::vector<std::vector<int>>& tiny,
     }
     for (int i : t)
       owner[i] = -1;
+    large.push_back(std::move(t));
   }
-  if (keep.size() == tiny.size()) { // nothing to split (no clean psb-dev shape reaches the limit)
+  if (large.empty()) { // nothing to split (no clean psb-dev shape reaches the limit)
     tiny = std::move(keep);
     return;
   }
   std::vector<int> queue;
-  std::vector<int> label(n, -1);
   for (std::size_t p = 0; p < patches.size(); ++p)
     for (int i : patches[p].dense)
-      label[i] = static_cast<int>(p);
+      owner[i] = static_cast<int>(p);
   for (int i = 0; i < n; ++i)
-    if (label[i] >= 0)
+    if (owner[i] >= 0)
       queue.push_back(i);
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const int i = queue[head];
     for (const int* it = g.neighboursBegin(i); it != g.neighboursEnd(i); ++it)
       if (owner[*it] == -1) {
-        owner[*it] = label[i];
-        label[*it] = label[i];
-        patches[label[i]].dense.push_back(*it);
+        owner[*it] = owner[i];
+        patches[owner[i]].dense.push_back(*it);
         queue.push_back(*it);
       }
   }
-  // Unreached leftovers (no graph path to a patch) stay tiny patches.
-  for (int s = 0; s < n; ++s) {
-    if (owner[s] != -1)
-      continue;
-    std::vector<int> component{s};
-    owner[s] = -3;
-    for (std::size_t head = 0; head < component.size(); ++head)
-      for (const int* it = g.neighboursBegin(component[head]);
-           it != g.neighboursEnd(component[head]); ++it)
-        if (owner[*it] == -1) {
-          owner[*it] = -3;
-          component.push_back(*it);
-        }
-    keep.push_back(std::move(component));
-  }
+  // A leftover is connected: the search reaches all of it or, when no patch touches it (a graph
+  // component without a region), none of it. The latter stays a tiny patch.
+  for (auto& t : large)
+    if (owner[t.front()] == -1)
+      keep.push_back(std::move(t));
   tiny = std::move(keep);
 }
 
