@@ -40,10 +40,24 @@ const char* const kUsage =
     "                     Voronoi medial mesh of the points\n"
     "  --save-mat         also write PREFIX_base.ma and PREFIX_struct.ma (medial mesh only)\n"
     "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"
-    "  --json             print one JSON object: parts, point_counts, seconds per stage\n";
+    "  --json             print one JSON object: parts, point_counts, seconds per stage,\n"
+    "                     origin (what a cloud far from 0 was moved by; outputs are written\n"
+    "                     back in the file's frame)\n";
 
 
 
+
+/// \a mat moved back by the reader's origin (LoadedCloud::origin).
+segmat::MedialMesh
+inFileFrame(const segmat::MedialMesh& mat, const Eigen::Vector3d& origin)
+{
+  if (origin.isZero())
+    return mat;
+  std::vector<Eigen::Vector3d> centers = mat.centers();
+  for (Eigen::Vector3d& c : centers)
+    c += origin;
+  return segmat::MedialMesh(std::move(centers), mat.radii(), mat.edges(), mat.triangles());
+}
 
 } // namespace
 
@@ -130,12 +144,17 @@ main(int argc, char** argv)
 
     pcl::PointCloud<pcl::PointXYZL> labelled;
     segmentation.getLabeledCloud(labelled);
+    // Outputs in the file's own frame (the reader moved far-away clouds next to 0).
+    if (!loaded.origin.isZero())
+      for (pcl::PointXYZL& p : labelled)
+        p.getVector3fMap() = (p.getVector3fMap().cast<double>() + loaded.origin).cast<float>();
     segmat::io::saveLabeledCloudPcd(prefix + ".pcd", labelled);
     segmat::io::saveColoredCloudPly(prefix + ".ply", labelled);
     segmat::io::saveLabels(prefix + ".labels", segmentation.getLabels());
     if (save_mat && !segmentation.getBaseMat().empty()) {
-      segmat::io::saveMa(prefix + "_base.ma", segmentation.getBaseMat());
-      segmat::io::saveMa(prefix + "_struct.ma", segmentation.getStructuredMat());
+      segmat::io::saveMa(prefix + "_base.ma", inFileFrame(segmentation.getBaseMat(), loaded.origin));
+      segmat::io::saveMa(prefix + "_struct.ma",
+                         inFileFrame(segmentation.getStructuredMat(), loaded.origin));
     }
     const double write_seconds = secondsSince(start);
 
@@ -151,7 +170,8 @@ main(int argc, char** argv)
       std::printf("], \"seconds\": {");
       for (std::size_t k = 0; k < seconds.size(); ++k)
         std::printf("%s\"%s\": %.6f", k ? ", " : "", seconds[k].first.c_str(), seconds[k].second);
-      std::printf("}}\n");
+      std::printf("}, \"origin\": [%.17g, %.17g, %.17g]}\n", loaded.origin.x(), loaded.origin.y(),
+                  loaded.origin.z());
     }
     else {
       std::printf("parts: %zu\npoint counts:", parts.size());
@@ -160,6 +180,10 @@ main(int argc, char** argv)
       std::printf("\nseconds:");
       for (const auto& stage : seconds)
         std::printf(" %s %.4f", stage.first.c_str(), stage.second);
+      if (!loaded.origin.isZero())
+        std::printf("\norigin: %.17g %.17g %.17g (the file's points lie far from 0: segmented "
+                    "relative to this point, written back in the file's frame)",
+                    loaded.origin.x(), loaded.origin.y(), loaded.origin.z());
       std::printf("\nwrote %s.pcd, %s.ply and %s.labels\n", prefix.c_str(), prefix.c_str(),
                   prefix.c_str());
     }

@@ -119,6 +119,34 @@ TEST(LoadCloud, XyzWithAndWithoutNormals)
   EXPECT_EQ((*c.cloud)[1].getNormalVector3fMap(), Eigen::Vector3f(1, 0, 0));
 }
 
+TEST(LoadCloud, FarFromOriginIsReadRelativeToARoundedOrigin)
+{
+  // A 1.5-unit patch two million units out (a georeferenced scan): float keeps only steps of
+  // 0.125–0.25 there, which would merge the y values 0.001 apart and the z values 0.002 apart.
+  const std::string text = "1000000.25 2000000.5 -3000000.75\n"
+                           "1000001.75 2000000.5 -3000000.75\n"
+                           "1000000.25 2000000.501 -3000000.75\n"
+                           "1000000.25 2000000.5 -3000000.748\n";
+  const io::LoadedCloud c = io::loadCloud(writeScratchFile("far.xyz", text));
+  ASSERT_EQ(c.cloud->size(), 4u);
+  // Box centre (1000001, 2000000.5005, -3000000.749); diagonal ~1.5, so whole units.
+  EXPECT_EQ(c.origin, Eigen::Vector3d(1000001, 2000001, -3000001));
+  const Eigen::Vector3d file[4] = {{1000000.25, 2000000.5, -3000000.75},
+                                   {1000001.75, 2000000.5, -3000000.75},
+                                   {1000000.25, 2000000.501, -3000000.75},
+                                   {1000000.25, 2000000.5, -3000000.748}};
+  for (int i = 0; i < 4; ++i)
+    EXPECT_LT(((*c.cloud)[i].getVector3fMap().cast<double>() + c.origin - file[i]).norm(), 1e-6)
+        << i;
+  EXPECT_NEAR((*c.cloud)[2].y - (*c.cloud)[0].y, 0.001, 1e-6);
+  EXPECT_NEAR((*c.cloud)[3].z - (*c.cloud)[0].z, 0.002, 1e-6);
+
+  // Near 0 (centre within 100 diagonals) nothing moves: 50 units out, diagonal 1.
+  const io::LoadedCloud near = io::loadCloud(writeScratchFile("near.xyz", "50 0 0\n51 0 0\n"));
+  EXPECT_TRUE(near.origin.isZero());
+  EXPECT_EQ((*near.cloud)[1].getVector3fMap(), Eigen::Vector3f(51, 0, 0));
+}
+
 // ---- Malformed files ----
 
 TEST(LoadCloudErrors, MissingUnknownAndEmpty)

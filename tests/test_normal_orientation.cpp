@@ -310,3 +310,22 @@ TEST(NormalOrientation, MirrorRelationOrientsBothSidesOfAThinPlate)
     EXPECT_EQ(countOutward(*shuffled, shape, identity(shape.size())), shape.size());
   }
 }
+
+TEST(CloudPreprocessing, WarnsWhenFloatCoordinatesAreTooCoarseForTheCloud)
+{
+  // A unit sphere 10^5 out: floats step by 2^-7 ≈ 0.008 there, 0.2 % of its diagonal (3.5).
+  auto cloud = sphereCloud(400, 2).toPointNormal();
+  CloudPreprocessing pre;
+  pre.setInputCloud(cloud);
+  pcl::PointCloud<pcl::PointNormal> working;
+  ::testing::internal::CaptureStderr();
+  ASSERT_TRUE(pre.compute(working));
+  EXPECT_EQ(::testing::internal::GetCapturedStderr().find("from the origin"), std::string::npos);
+  for (pcl::PointNormal& p : *cloud)
+    p.x += 1e5f;
+  ::testing::internal::CaptureStderr();
+  ASSERT_TRUE(pre.compute(working)); // still segmentable, but the user is told why it is coarse
+  const std::string warning = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(warning.find("from the origin"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("grid"), std::string::npos) << warning;
+}

@@ -12,7 +12,9 @@
 #include <gtest/gtest.h>
 #include <pcl/io/pcd_io.h>
 
+#include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -34,7 +36,57 @@ writeDumbbellPcd(const std::string& name)
   return path;
 }
 
+/// The dumbbell of writeDumbbellPcd (without NaNs) as text, every coordinate moved by \a shift.
+std::string
+writeDumbbellXyz(const std::string& name, double shift)
+{
+  const auto cloud = test::dumbbellCloud(8000, 3).toPointNormal();
+  const std::string path = test::scratchDir() + name;
+  std::ofstream out(path);
+  out.precision(17);
+  for (const pcl::PointNormal& p : *cloud)
+    out << p.x + shift << ' ' << p.y + shift << ' ' << p.z + shift << ' ' << p.normal_x << ' '
+        << p.normal_y << ' ' << p.normal_z << '\n';
+  return path;
+}
+
 } // namespace
+
+TEST(SegmatCloud, CloudFarFromOriginGetsTheSameLabelsAndKeepsItsFrame)
+{
+  // Two million units out, float steps are 0.25 — a third of the dumbbell's bar radius, so read
+  // as floats the cloud would be a coarse grid. The reader moves it next to 0, exactly.
+  const std::string near = writeDumbbellXyz("dumbbell_near.xyz", 0.0);
+  const std::string far = writeDumbbellXyz("dumbbell_far.xyz", 2e6);
+  const std::string prefix = test::scratchDir() + "dumbbell_far";
+  const test::ProgramRun near_run =
+      test::runProgram("segmat_cloud", near + " -o " + prefix + "_near --json");
+  const test::ProgramRun far_run = test::runProgram("segmat_cloud", far + " -o " + prefix + " --json");
+  ASSERT_EQ(near_run.status, 0) << near_run.err;
+  ASSERT_EQ(far_run.status, 0) << far_run.err;
+  const std::vector<int> labels = io::loadSeg(prefix + ".labels", 8000);
+  EXPECT_EQ(labels, io::loadSeg(prefix + "_near.labels", 8000));
+  EXPECT_EQ(std::set<int>(labels.begin(), labels.end()).size(), 3u);
+
+  std::istringstream in(far_run.out);
+  boost::property_tree::ptree json;
+  boost::property_tree::read_json(in, json);
+  std::vector<double> origin;
+  for (const auto& c : json.get_child("origin"))
+    origin.push_back(c.second.get_value<double>());
+  EXPECT_EQ(origin, std::vector<double>(3, 2e6));
+  // The labelled PCD is in the file's frame (to float precision there: 0.25).
+  const auto input = test::dumbbellCloud(8000, 3).toPointNormal();
+  pcl::PointCloud<pcl::PointXYZL> written;
+  ASSERT_EQ(pcl::io::loadPCDFile(prefix + ".pcd", written), 0);
+  ASSERT_EQ(written.size(), 8000u);
+  for (std::size_t i = 0; i < written.size(); i += 997)
+    EXPECT_LT((written[i].getVector3fMap().cast<double>() -
+               (*input)[i].getVector3fMap().cast<double>() - Eigen::Vector3d::Constant(2e6))
+                  .norm(),
+              0.25)
+        << i;
+}
 
 TEST(SegmatCloud, WritesPcdPlyLabelsAndPrintsJson)
 {

@@ -14,6 +14,8 @@
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -24,17 +26,40 @@ namespace io {
 namespace {
 const char* const kCloudFormats = ".pcd, .ply, .xyz, .txt";
 
+/// LoadedCloud::origin for these points: zero near 0, else the bounding box's centre rounded to
+/// a power of ten no larger than the diagonal (a readable shift that keeps float precision).
+Eigen::Vector3d
+recentringOrigin(const std::vector<Eigen::Vector3d>& points)
+{
+  Eigen::AlignedBox3d box;
+  for (const Eigen::Vector3d& p : points)
+    if (p.allFinite())
+      box.extend(p);
+  if (box.isEmpty())
+    return Eigen::Vector3d::Zero();
+  const Eigen::Vector3d centre = box.center();
+  const double diagonal = box.diagonal().norm();
+  // Float resolves ~1.2e-7 of a coordinate: 100 diagonals away that is ~1e-5 of the diagonal,
+  // below any sampling; far beyond it the cloud turns into a grid (1e6 from 0, teddy's 1.7
+  // diagonal is 0.06 per float step).
+  if (!(centre.cwiseAbs().maxCoeff() > 100.0 * diagonal))
+    return Eigen::Vector3d::Zero();
+  const double step = diagonal > 0.0 ? std::pow(10.0, std::floor(std::log10(diagonal))) : 1.0;
+  return (centre / step).array().round().matrix() * step;
+}
+
 LoadedCloud
 makeCloud(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>* normals)
 {
   LoadedCloud out;
+  out.origin = recentringOrigin(points);
   out.cloud.reset(new pcl::PointCloud<pcl::PointNormal>);
   out.cloud->resize(points.size());
   out.has_normals = normals != nullptr;
   bool dense = true;
   for (std::size_t i = 0; i < points.size(); ++i) {
     pcl::PointNormal& p = (*out.cloud)[i];
-    p.getVector3fMap() = points[i].cast<float>();
+    p.getVector3fMap() = (points[i] - out.origin).cast<float>();
     if (normals)
       p.getNormalVector3fMap() = (*normals)[i].cast<float>();
     else

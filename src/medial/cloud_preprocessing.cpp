@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <tuple>
 
@@ -33,6 +34,26 @@ usableNormal(const pcl::PointNormal& p)
 {
   const Eigen::Vector3f n = p.getNormalVector3fMap();
   return n.allFinite() && n.squaredNorm() > 0.0f;
+}
+
+/// Float coordinates resolve ~1.2e-7 of their magnitude: a cloud far from 0 for its size
+/// (georeferenced scans) is a grid before any step here sees it, and nothing downstream can
+/// tell its cuts from the grid's. Said once, where the cause is still visible.
+void
+warnIfFarFromOrigin(const pcl::PointCloud<pcl::PointNormal>& cloud, const std::vector<int>& indices)
+{
+  Eigen::AlignedBox3f box;
+  for (int i : indices)
+    box.extend(cloud[i].getVector3fMap());
+  const double magnitude = box.center().cwiseAbs().maxCoeff();
+  const double diagonal = box.diagonal().norm();
+  const double resolution = magnitude * std::numeric_limits<float>::epsilon();
+  if (diagonal > 0.0 && resolution > 1e-4 * diagonal)
+    PCL_WARN("[segmat::CloudPreprocessing::compute] The cloud lies %g from the origin, %g times "
+             "its diagonal: float coordinates there resolve only %g (%.2g %% of the diagonal), "
+             "so the points sit on a grid. Move the cloud next to the origin first "
+             "(segmat::io::loadCloud does so for files).\n",
+             magnitude, magnitude / diagonal, resolution, 100.0 * resolution / diagonal);
 }
 
 /// Removes exact coordinate duplicates from \a indices (keeps the lowest index), keeps order.
@@ -270,6 +291,7 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
     PCL_ERROR("[segmat::CloudPreprocessing::compute] The cloud has no finite point.\n");
     return false;
   }
+  warnIfFarFromOrigin(in, candidates);
   bool estimate = !use_input_normals_;
   if (!estimate) {
     const auto bad = std::count_if(candidates.begin(), candidates.end(),

@@ -23,6 +23,13 @@ struct LoadedCloud
   pcl::PointCloud<pcl::PointNormal>::Ptr cloud;
   /** \brief True when the file has all three normal fields (`normal_x/y/z`, or `nx/ny/nz`). */
   bool has_normals = false;
+  /** \brief Where the points were moved from: a file point is `cloud` point + origin. Zero
+   * unless the file's points lie far from 0 for their size (more than 100 times their bounding
+   * box's diagonal, as georeferenced scans do): PCL stores float coordinates, which resolve only
+   * about 1e-7 of their magnitude, so such a cloud is read relative to its bounding box's centre,
+   * rounded to a multiple of the largest power of ten not above the diagonal (full precision
+   * is kept where the file stores double or text coordinates). */
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
 };
 
 /** \brief Reads a point cloud, choosing the reader by extension (any case).
