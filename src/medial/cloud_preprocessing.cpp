@@ -213,6 +213,53 @@ smoothSurface(std::vector<Eigen::Vector3f>& positions, int k, int threads, doubl
   return median(moves) / spacing;
 }
 
+/// Removes from \a indices the points standing apart from the surface (scanner outliers: flying
+/// pixels, dust): those whose mean distance to their 8 nearest neighbours exceeds 4 times the
+/// cloud's median. Each would be a surface sample of its own, and the Voronoi balls between it
+/// and the surface are spurious medial spheres. Runs on the resampled points: an outlier keeps
+/// its own voxel, so it is still there, and the work stays at the working size.
+void
+dropIsolatedPoints(const pcl::PointCloud<pcl::PointNormal>& cloud, std::vector<int>& indices,
+                   int threads)
+{
+  constexpr int kNeighbours = 8;
+  constexpr float kFactor = 4.0f;
+  const int n = static_cast<int>(indices.size());
+  if (n <= 2 * kNeighbours)
+    return;
+  pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
+  xyz->resize(n);
+  for (int i = 0; i < n; ++i)
+    (*xyz)[i].getVector3fMap() = cloud[indices[i]].getVector3fMap();
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud(xyz);
+  std::vector<float> mean_distance(n, 0.0f);
+#pragma omp parallel num_threads(threads)
+  {
+    pcl::Indices nn;
+    std::vector<float> d2;
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      tree.nearestKSearch((*xyz)[i], kNeighbours + 1, nn, d2); // the point itself comes first
+      for (std::size_t k = 1; k < d2.size(); ++k)
+        mean_distance[i] += std::sqrt(d2[k]) / float(d2.size() - 1);
+    }
+  }
+  const float limit = kFactor * median(mean_distance);
+  if (!(limit > 0.0f))
+    return;
+  std::vector<int> kept;
+  kept.reserve(n);
+  for (int i = 0; i < n; ++i)
+    if (mean_distance[i] <= limit)
+      kept.push_back(indices[i]);
+  if (kept.size() != indices.size()) {
+    PCL_DEBUG("[segmat::CloudPreprocessing::compute] %zu isolated point(s) set aside.\n",
+              indices.size() - kept.size());
+    indices.swap(kept);
+  }
+}
+
 } // namespace
 
 CloudPreprocessing::CloudPreprocessing()
@@ -325,6 +372,7 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
   for (int& k : kept)
     k = candidates[k];
   dropExactDuplicates(in, kept);
+  dropIsolatedPoints(in, kept, detail::threadCount(threads_));
   if (kept.size() < 3) {
     PCL_ERROR("[segmat::CloudPreprocessing::compute] %zu distinct finite point(s): at least 3 "
               "are needed.\n", kept.size());
