@@ -65,6 +65,25 @@ worstPurity(const SampledCloud& s, const std::vector<int>& labels, bool* distinc
   return worst;
 }
 
+/// Points of the first \a count whose label maps to their reference label, each label being
+/// matched to the reference label most of its points carry.
+int
+majorityAgreement(const std::vector<int>& labels, const std::vector<int>& reference,
+                  std::size_t count)
+{
+  std::map<int, std::map<int, int>> overlap;
+  for (std::size_t i = 0; i < count; ++i)
+    ++overlap[labels[i]][reference[i]];
+  int agree = 0;
+  for (const auto& [label, histogram] : overlap) {
+    int best = 0;
+    for (const auto& [r, n] : histogram)
+      best = std::max(best, n);
+    agree += best;
+  }
+  return agree;
+}
+
 } // namespace
 
 TEST(CloudSegmentation, DumbbellIsThreeParts)
@@ -153,18 +172,8 @@ TEST(CloudSegmentation, TeddyAgreesWithTheMeshPath)
       segmentLabels<pcl::PointNormal>(shape.toCloud<pcl::PointNormal>(), &parts);
   EXPECT_GE(parts, 7u);
   EXPECT_LE(parts, 9u);
-  const std::vector<int> truth = shape.pointLabels(face_labels);
-  std::map<int, std::map<int, int>> overlap;
-  for (std::size_t i = 0; i < shape.size(); ++i)
-    ++overlap[labels[i]][truth[i]];
-  int agree = 0;
-  for (const auto& [label, histogram] : overlap) {
-    int best = 0;
-    for (const auto& [t, count] : histogram)
-      best = std::max(best, count);
-    agree += best;
-  }
-  EXPECT_GE(agree, int(0.9 * shape.size()));
+  EXPECT_GE(majorityAgreement(labels, shape.pointLabels(face_labels), shape.size()),
+            int(0.9 * shape.size()));
 }
 
 TEST(CloudSegmentation, FlyingPointsInAScanChangeNothingAndGetLabels)
@@ -194,17 +203,7 @@ TEST(CloudSegmentation, FlyingPointsInAScanChangeNothingAndGetLabels)
   const std::vector<int> clean_labels = segmentLabels<pcl::PointXYZ>(clean, &clean_parts);
   const std::vector<int> labels = segmentLabels<pcl::PointXYZ>(scan, &scan_parts);
   EXPECT_EQ(scan_parts, clean_parts);
-  std::map<int, std::map<int, int>> overlap;
-  for (std::size_t i = 0; i < clean->size(); ++i)
-    ++overlap[labels[i]][clean_labels[i]];
-  int agree = 0;
-  for (const auto& [label, histogram] : overlap) {
-    int best = 0;
-    for (const auto& [l, count] : histogram)
-      best = std::max(best, count);
-    agree += best;
-  }
-  EXPECT_GE(agree, int(0.97 * clean->size()));
+  EXPECT_GE(majorityAgreement(labels, clean_labels, clean->size()), int(0.97 * clean->size()));
   for (std::size_t i = clean->size(); i < scan->size(); ++i)
     EXPECT_GE(labels[i], 0) << i; // every input point gets a part: its nearest surface point's
 }

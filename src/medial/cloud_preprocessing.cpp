@@ -139,6 +139,27 @@ median(std::vector<float> values)
   return double(values[values.size() / 2]);
 }
 
+/// Calls visit(s, i, nn, d2) for i = s · stride (s = 0, 1, ...) with the \a k nearest neighbours
+/// of point i of the tree's cloud (i itself first), on \a threads threads. Each s is visited
+/// once, so what visit writes to slot s does not depend on the thread count.
+template <typename Visit>
+void
+forEachNeighbourhood(const pcl::KdTreeFLANN<pcl::PointXYZ>& tree, int k, int stride, int threads,
+                     Visit visit)
+{
+  const auto& cloud = *tree.getInputCloud();
+  const int count = (static_cast<int>(cloud.size()) + stride - 1) / stride;
+#pragma omp parallel num_threads(threads)
+  {
+    pcl::Indices nn;
+    std::vector<float> d2;
+#pragma omp for schedule(static)
+    for (int s = 0; s < count; ++s)
+      if (tree.nearestKSearch(cloud[s * stride], k, nn, d2) > 0)
+        visit(s, s * stride, nn, d2);
+  }
+}
+
 /// The cloud's noise and spacing, from every \a stride-th point: the median offset of a point
 /// from the PCA plane of its 8 nearest neighbours (near enough to stay on its side of a thin
 /// wall; a wider PCA would measure the wall's thickness), scaled to a Gaussian σ (÷ 0.6745),
@@ -150,26 +171,19 @@ noiseAndSpacing(const std::vector<Eigen::Vector3f>& positions,
   const int n = static_cast<int>(positions.size());
   const int count = (n + stride - 1) / stride;
   std::vector<float> noise(count, 0.0f), spacing(count, 0.0f);
-  const auto& cloud = *tree.getInputCloud();
-#pragma omp parallel num_threads(threads)
-  {
-    pcl::Indices near;
-    std::vector<float> d2;
-#pragma omp for schedule(static)
-    for (int s = 0; s < count; ++s) {
-      const int i = s * stride;
-      if (tree.nearestKSearch(cloud[i], std::min(8, n), near, d2) < 4)
-        continue;
-      const auto pca = detail::neighbourhoodPca(positions, near);
-      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-      for (int j : near)
-        mean += positions[j].cast<double>();
-      mean /= double(near.size());
-      noise[s] = float(
-          std::abs((positions[i].cast<double>() - mean).dot(pca.eigenvectors().col(0))));
-      spacing[s] = std::sqrt(d2[1]); // [0] is the point itself
-    }
-  }
+  forEachNeighbourhood(tree, std::min(8, n), stride, threads,
+                       [&](int s, int i, const pcl::Indices& near, const std::vector<float>& d2) {
+                         if (near.size() < 4)
+                           return;
+                         const auto pca = detail::neighbourhoodPca(positions, near);
+                         Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+                         for (int j : near)
+                           mean += positions[j].cast<double>();
+                         mean /= double(near.size());
+                         noise[s] = float(std::abs((positions[i].cast<double>() - mean)
+                                                       .dot(pca.eigenvectors().col(0))));
+                         spacing[s] = std::sqrt(d2[1]); // [0] is the point itself
+                       });
   return {median(noise) / 0.6745, median(spacing)};
 }
 
@@ -197,18 +211,14 @@ smoothSurface(std::vector<Eigen::Vector3f>& positions, int k, int threads, doubl
   const int kk = std::min(k, n);
   std::vector<Eigen::Vector3f> moved(positions);
   std::vector<float> moves(n, 0.0f);
-#pragma omp parallel num_threads(threads)
-  {
-    pcl::Indices nn;
-    std::vector<float> d2;
-#pragma omp for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      if (tree.nearestKSearch((*cloud)[i], kk, nn, d2) < 6 || !(d2.back() > 0.0f))
-        continue;
-      moved[i] = sidedHeightFit(positions, i, nn, d2, std::sqrt(double(d2.back())), band);
-      moves[i] = (moved[i] - positions[i]).norm();
-    }
-  }
+  forEachNeighbourhood(tree, kk, 1, threads,
+                       [&](int, int i, const pcl::Indices& nn, const std::vector<float>& d2) {
+                         if (nn.size() < 6 || !(d2.back() > 0.0f))
+                           return;
+                         moved[i] = sidedHeightFit(positions, i, nn, d2,
+                                                   std::sqrt(double(d2.back())), band);
+                         moves[i] = (moved[i] - positions[i]).norm();
+                       });
   positions.swap(moved);
   return median(moves) / spacing;
 }
@@ -234,17 +244,11 @@ dropIsolatedPoints(const pcl::PointCloud<pcl::PointNormal>& cloud, std::vector<i
   pcl::KdTreeFLANN<pcl::PointXYZ> tree;
   tree.setInputCloud(xyz);
   std::vector<float> mean_distance(n, 0.0f);
-#pragma omp parallel num_threads(threads)
-  {
-    pcl::Indices nn;
-    std::vector<float> d2;
-#pragma omp for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      tree.nearestKSearch((*xyz)[i], kNeighbours + 1, nn, d2); // the point itself comes first
-      for (std::size_t k = 1; k < d2.size(); ++k)
-        mean_distance[i] += std::sqrt(d2[k]) / float(d2.size() - 1);
-    }
-  }
+  forEachNeighbourhood(tree, kNeighbours + 1, 1, threads,
+                       [&](int, int i, const pcl::Indices&, const std::vector<float>& d2) {
+                         for (std::size_t k = 1; k < d2.size(); ++k) // [0]: the point itself
+                           mean_distance[i] += std::sqrt(d2[k]) / float(d2.size() - 1);
+                       });
   const float limit = kFactor * median(mean_distance);
   if (!(limit > 0.0f))
     return;
