@@ -329,3 +329,43 @@ TEST(CloudPreprocessing, WarnsWhenFloatCoordinatesAreTooCoarseForTheCloud)
   EXPECT_NE(warning.find("from the origin"), std::string::npos) << warning;
   EXPECT_NE(warning.find("grid"), std::string::npos) << warning;
 }
+
+TEST(CloudPreprocessing, SetsIsolatedPointsAsideButKeepsSparseRegions)
+{
+  // A unit sphere whose upper half is sampled 25 times more sparsely (5 times the spacing, as
+  // a scan's far side), plus five flying points 3 units out, each on its own. (A clump of flying
+  // points close together is not isolated and stays: README, "Limits".)
+  const auto sphere = sphereCloud(20000, 4).toPointNormal();
+  pcl::PointCloud<pcl::PointNormal>::Ptr cloud(new pcl::PointCloud<pcl::PointNormal>);
+  std::size_t upper = 0;
+  for (const pcl::PointNormal& p : *sphere)
+    if (p.z < 0.0f || upper++ % 25 == 0)
+      cloud->push_back(p);
+  const std::size_t surface = cloud->size();
+  for (int i = 0; i < 5; ++i) {
+    pcl::PointNormal p = (*cloud)[i];
+    const float a = 1.2566f * float(i); // 72° apart around z
+    p.getVector3fMap() = Eigen::Vector3f(3.0f * std::cos(a), 3.0f * std::sin(a), 0.5f);
+    cloud->push_back(p);
+  }
+  CloudPreprocessing pre;
+  pre.setInputCloud(cloud);
+  pre.setWorkingSize(100000); // no resampling: every point is a working point unless set aside
+  pcl::PointCloud<pcl::PointNormal> working;
+  ASSERT_TRUE(pre.compute(working));
+  const std::vector<int>& kept = pre.getWorkingIndices();
+  std::size_t sparse = 0, sparse_kept = 0;
+  for (std::size_t i = 0; i < surface; ++i)
+    sparse += (*cloud)[i].z >= 0.0f;
+  for (int i : kept) {
+    EXPECT_LT(i, int(surface)) << "flying point kept";
+    sparse_kept += i < int(surface) && (*cloud)[i].z >= 0.0f;
+  }
+  // The sparse half stays; only a few points on its border with the dense half, whose nearest
+  // neighbours are dense, look isolated (3 of 402 here).
+  EXPECT_GE(sparse_kept, sparse - sparse / 50) << sparse_kept << " of " << sparse;
+  EXPECT_GE(kept.size(), surface - sparse / 50);
+  // The flying points still get a stand-in (the nearest working point) for their label.
+  for (std::size_t i = surface; i < cloud->size(); ++i)
+    EXPECT_GE(pre.getInputToWorking()[i], 0) << i;
+}

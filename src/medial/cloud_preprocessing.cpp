@@ -225,15 +225,16 @@ smoothSurface(std::vector<Eigen::Vector3f>& positions, int k, int threads, doubl
 
 /// Removes from \a indices the points standing apart from the surface (scanner outliers: flying
 /// pixels, dust): those whose mean distance to their 8 nearest neighbours exceeds 4 times the
-/// cloud's median. Each would be a surface sample of its own, and the Voronoi balls between it
-/// and the surface are spurious medial spheres. Runs on the resampled points: an outlier keeps
-/// its own voxel, so it is still there, and the work stays at the working size.
+/// cloud's median and twice the median of their neighbours' own. Each would be a surface
+/// sample of its own, and the Voronoi balls between it and the surface are spurious medial
+/// spheres. Runs on the resampled points: an outlier keeps its own voxel, so it is still there,
+/// and the work stays at the working size.
 void
 dropIsolatedPoints(const pcl::PointCloud<pcl::PointNormal>& cloud, std::vector<int>& indices,
                    int threads)
 {
   constexpr int kNeighbours = 8;
-  constexpr float kFactor = 4.0f;
+  constexpr float kFactor = 4.0f, kLocalFactor = 2.0f;
   const int n = static_cast<int>(indices.size());
   if (n <= 2 * kNeighbours)
     return;
@@ -244,19 +245,34 @@ dropIsolatedPoints(const pcl::PointCloud<pcl::PointNormal>& cloud, std::vector<i
   pcl::KdTreeFLANN<pcl::PointXYZ> tree;
   tree.setInputCloud(xyz);
   std::vector<float> mean_distance(n, 0.0f);
+  std::vector<int> neighbours(std::size_t(n) * kNeighbours, -1);
   forEachNeighbourhood(tree, kNeighbours + 1, 1, threads,
-                       [&](int, int i, const pcl::Indices&, const std::vector<float>& d2) {
-                         for (std::size_t k = 1; k < d2.size(); ++k) // [0]: the point itself
+                       [&](int, int i, const pcl::Indices& nn, const std::vector<float>& d2) {
+                         for (std::size_t k = 1; k < d2.size(); ++k) { // [0]: the point itself
                            mean_distance[i] += std::sqrt(d2[k]) / float(d2.size() - 1);
+                           neighbours[std::size_t(i) * kNeighbours + k - 1] = nn[k];
+                         }
                        });
   const float limit = kFactor * median(mean_distance);
   if (!(limit > 0.0f))
     return;
   std::vector<int> kept;
   kept.reserve(n);
-  for (int i = 0; i < n; ++i)
-    if (mean_distance[i] <= limit)
+  std::vector<float> around;
+  for (int i = 0; i < n; ++i) {
+    bool isolated = mean_distance[i] > limit;
+    if (isolated) {
+      // A sparser region of the scan (range fall-off) is sparse all over: its points are as far
+      // from their neighbours as those are from theirs, and it stays.
+      around.clear();
+      for (int k = 0; k < kNeighbours; ++k)
+        if (const int j = neighbours[std::size_t(i) * kNeighbours + k]; j >= 0)
+          around.push_back(mean_distance[j]);
+      isolated = around.empty() || mean_distance[i] > kLocalFactor * median(around);
+    }
+    if (!isolated)
       kept.push_back(indices[i]);
+  }
   if (kept.size() != indices.size()) {
     PCL_DEBUG("[segmat::CloudPreprocessing::compute] %zu isolated point(s) set aside.\n",
               indices.size() - kept.size());

@@ -26,8 +26,9 @@ namespace segmat {
  *  2. keep one point per voxel (segmat::voxelRepresentativesNear) when there are more than
  *     the working size, then drop exact duplicates (lowest index kept) and isolated points
  *     (scanner outliers: mean distance to the 8 nearest neighbours above 4 times the cloud's
- *     median; each would be a surface sample of its own inside or around the shape — their
- *     input points still get the label of the nearest working point); a warning when the
+ *     median and twice the median of those neighbours' own, so that a sparser region of a scan
+ *     stays; each outlier would be a surface sample of its own inside or around the shape —
+ *     their input points still get the label of the nearest working point); a warning when the
  *     cloud lies so far from the origin that float coordinates are a grid at its scale;
  *  3. normals: the input's, normalised (default when it has them); or estimated: first, when
  *     the cloud is noisy (a point's median offset from the plane of its 8 nearest neighbours,
