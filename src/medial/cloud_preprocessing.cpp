@@ -228,7 +228,10 @@ smoothSurface(std::vector<Eigen::Vector3f>& positions, int k, int threads, doubl
 /// cloud's median and twice the median of their neighbours' own. Each would be a surface
 /// sample of its own, and the Voronoi balls between it and the surface are spurious medial
 /// spheres. Runs on the resampled points: an outlier keeps its own voxel, so it is still there,
-/// and the work stays at the working size.
+/// and the work stays at the working size. Not pcl::StatisticalOutlierRemoval: its limit (mean
+/// plus a multiple of the standard deviation of the same distances, over the whole cloud) has
+/// no neighbourhood test, and a global limit alone drops the sparse side of a scan with the
+/// outliers (CloudPreprocessing.SetsIsolatedPointsAsideButKeepsSparseRegions).
 void
 dropIsolatedPoints(const pcl::PointCloud<pcl::PointNormal>& cloud, std::vector<int>& indices,
                    int threads)
@@ -245,29 +248,28 @@ dropIsolatedPoints(const pcl::PointCloud<pcl::PointNormal>& cloud, std::vector<i
   pcl::KdTreeFLANN<pcl::PointXYZ> tree;
   tree.setInputCloud(xyz);
   std::vector<float> mean_distance(n, 0.0f);
-  std::vector<int> neighbours(std::size_t(n) * kNeighbours, -1);
   forEachNeighbourhood(tree, kNeighbours + 1, 1, threads,
-                       [&](int, int i, const pcl::Indices& nn, const std::vector<float>& d2) {
-                         for (std::size_t k = 1; k < d2.size(); ++k) { // [0]: the point itself
+                       [&](int, int i, const pcl::Indices&, const std::vector<float>& d2) {
+                         for (std::size_t k = 1; k < d2.size(); ++k) // [0]: the point itself
                            mean_distance[i] += std::sqrt(d2[k]) / float(d2.size() - 1);
-                           neighbours[std::size_t(i) * kNeighbours + k - 1] = nn[k];
-                         }
                        });
   const float limit = kFactor * median(mean_distance);
   if (!(limit > 0.0f))
     return;
   std::vector<int> kept;
   kept.reserve(n);
-  std::vector<float> around;
+  pcl::Indices nn;
+  std::vector<float> d2, around;
   for (int i = 0; i < n; ++i) {
     bool isolated = mean_distance[i] > limit;
     if (isolated) {
       // A sparser region of the scan (range fall-off) is sparse all over: its points are as far
-      // from their neighbours as those are from theirs, and it stays.
+      // from their neighbours as those are from theirs, and it stays. Few points get here, so
+      // their neighbours are searched again rather than stored for all.
+      tree.nearestKSearch((*xyz)[i], kNeighbours + 1, nn, d2);
       around.clear();
-      for (int k = 0; k < kNeighbours; ++k)
-        if (const int j = neighbours[std::size_t(i) * kNeighbours + k]; j >= 0)
-          around.push_back(mean_distance[j]);
+      for (std::size_t k = 1; k < nn.size(); ++k)
+        around.push_back(mean_distance[nn[k]]);
       isolated = around.empty() || mean_distance[i] > kLocalFactor * median(around);
     }
     if (!isolated)
