@@ -12,6 +12,7 @@
  * Usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6,...] [--json] [--conditions abc]
  *        [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] [--reference-crease]
  *        [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F]
+ *        [--consensus-runs N]
  *   PSB_DIR defaults to ../shared/data/psb-dev (off/N.off, seg/Benchmark/N/N_k.seg).
  *   --dump DIR writes DIR/<model>_<a|b|c>.txt: "x y z label truth nx ny nz" per point (the
  *   cloud as segmented, our label, the first human's label, the sample's true normal).
@@ -24,6 +25,8 @@
  *   --no-visibility merges parts without the ball-union visibility test (setVisibilityFlag).
  *   --eta F / --omega F set the minimal region fraction η / the transfer smoothness ω
  *   (setMinRegionFraction / setSmoothnessWeight; defaults: the library's).
+ *   --consensus-runs N segmentations of a noisy cloud to take the consensus of
+ *   (CloudSegmentation::setConsensusRuns; 1: a single run as before the consensus).
  */
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"
@@ -80,6 +83,7 @@ struct Settings
   bool visibility = true; ///< merging tests visibility in the ball union
   double eta = -1.0;      ///< minimal region fraction η (< 0: the library's)
   double omega = -1.0;    ///< transfer smoothness ω (< 0: the library's)
+  int consensus_runs = -1; ///< runs of a noisy cloud (< 0: the library's)
 };
 
 /// The mesh path's face labels scored on \a sampled's points (1 − RI, mean over humans); with
@@ -121,6 +125,8 @@ run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int
     seg.setMinRegionFraction(settings.eta);
   if (settings.omega >= 0.0)
     seg.setSmoothnessWeight(settings.omega);
+  if (settings.consensus_runs > 0)
+    seg.setConsensusRuns(settings.consensus_runs);
   if (settings.meso_skeleton)
     seg.setMedialAxis(segmat::CloudMedialAxis::MesoSkeleton);
   if (settings.smoothing >= 0) {
@@ -216,6 +222,8 @@ main(int argc, char** argv)
       settings.eta = std::stod(argv[++i]);
     else if (arg == "--omega" && i + 1 < argc)
       settings.omega = std::stod(argv[++i]);
+    else if (arg == "--consensus-runs" && i + 1 < argc)
+      settings.consensus_runs = std::stoi(argv[++i]);
     else if (arg == "--no-visibility")
       settings.visibility = false;
     else if (arg == "--mesh-path")
@@ -229,7 +237,7 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json] "
                    "[--conditions abc] [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] "
-                   "[--reference-crease] [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F]\n";
+                   "[--reference-crease] [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F] [--consensus-runs N]\n";
       return 2;
     }
   }

@@ -39,10 +39,12 @@ const char* const kUsage =
     "  --meso-skeleton    medial axis from shrinking balls (no faces) instead of the default\n"
     "                     Voronoi medial mesh of the points\n"
     "  --save-mat         also write PREFIX_base.ma and PREFIX_struct.ma (medial mesh only)\n"
+    "  --runs N           segmentations of a noisy cloud to keep the consensus of (default 5;\n"
+    "                     1: one run). --runs-always: for every cloud, not only noisy ones\n"
     "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"
-    "  --json             print one JSON object: parts, point_counts, seconds per stage,\n"
-    "                     origin (what a cloud far from 0 was moved by; outputs are written\n"
-    "                     back in the file's frame)\n";
+    "  --json             print one JSON object: parts, point_counts, seconds per stage\n"
+    "                     (summed over the runs), runs [made, kept], origin (what a cloud far\n"
+    "                     from 0 was moved by; outputs are written back in the file's frame)\n";
 
 
 
@@ -111,6 +113,10 @@ main(int argc, char** argv)
         segmentation.setMedialAxis(segmat::CloudMedialAxis::MesoSkeleton);
       else if (arg == "--save-mat")
         save_mat = true;
+      else if (arg == "--runs")
+        segmentation.setConsensusRuns(parseInteger(arg, value(), 1));
+      else if (arg == "--runs-always")
+        segmentation.setConsensusForEveryCloudFlag(true);
       else if (arg == "--json")
         json = true;
       else if (!arg.empty() && arg[0] == '-')
@@ -170,8 +176,9 @@ main(int argc, char** argv)
       std::printf("], \"seconds\": {");
       for (std::size_t k = 0; k < seconds.size(); ++k)
         std::printf("%s\"%s\": %.6f", k ? ", " : "", seconds[k].first.c_str(), seconds[k].second);
-      std::printf("}, \"origin\": [%.17g, %.17g, %.17g]}\n", loaded.origin.x(), loaded.origin.y(),
-                  loaded.origin.z());
+      const auto runs = segmentation.getConsensusRunsMade();
+      std::printf("}, \"runs\": [%d, %d], \"origin\": [%.17g, %.17g, %.17g]}\n", runs.first,
+                  runs.second, loaded.origin.x(), loaded.origin.y(), loaded.origin.z());
     }
     else {
       std::printf("parts: %zu\npoint counts:", parts.size());
@@ -180,6 +187,10 @@ main(int argc, char** argv)
       std::printf("\nseconds:");
       for (const auto& stage : seconds)
         std::printf(" %s %.4f", stage.first.c_str(), stage.second);
+      const auto runs = segmentation.getConsensusRunsMade();
+      if (runs.first > 1)
+        std::printf("\nruns: %d (noisy cloud; kept run %d, the consensus; seconds are summed)",
+                    runs.first, runs.second);
       if (!loaded.origin.isZero())
         std::printf("\norigin: %.17g %.17g %.17g (the file's points lie far from 0: segmented "
                     "relative to this point, written back in the file's frame)",

@@ -121,6 +121,11 @@ TEST(SegmatCloud, WritesPcdPlyLabelsAndPrintsJson)
   for (const char* stage : {"load", "preprocessing", "medial", "graph", "grow_merge", "transfer",
                             "labels", "write"})
     EXPECT_GE(json.get<double>(std::string("seconds.") + stage), 0.0) << stage;
+  // A clean cloud with its normals: one run (the consensus is for noisy clouds).
+  std::vector<int> runs;
+  for (const auto& c : json.get_child("runs"))
+    runs.push_back(c.second.get_value<int>());
+  EXPECT_EQ(runs, (std::vector<int>{1, 0}));
 
   // Plain output, and the same labels again (deterministic), also with estimated normals.
   const test::ProgramRun plain =

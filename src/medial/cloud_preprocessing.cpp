@@ -344,6 +344,7 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
   working_indices_.clear();
   input_to_working_.clear();
   normals_estimated_ = false;
+  smoothing_passes_ = 0;
   if (!input_ || input_->empty()) {
     PCL_ERROR("[segmat::CloudPreprocessing::compute] No input cloud, or it is empty.\n");
     return false;
@@ -421,10 +422,14 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
     // spacing; a scan with noise shows 30 % and more); a noisy one gets passes while they
     // still move points by a noticeable part of the spacing.
     constexpr double kNoisyRatio = 0.1, kStillRatio = 0.05;
-    for (int it = 0; it < smoothing_iterations_; ++it)
-      if (smoothSurface(positions, 2 * normal_k_, threads, it == 0 ? kNoisyRatio : 0.0) <
-          kStillRatio)
+    for (int it = 0; it < smoothing_iterations_; ++it) {
+      const double moved =
+          smoothSurface(positions, 2 * normal_k_, threads, it == 0 ? kNoisyRatio : 0.0);
+      if (moved > 0.0)
+        ++smoothing_passes_;
+      if (moved < kStillRatio)
         break;
+    }
     for (std::size_t i = 0; i < cloud.size(); ++i)
       cloud[i].getVector3fMap() = positions[i];
     const pcl::PointCloud<pcl::PointXYZ>::Ptr xyz = detail::toXYZ(positions);

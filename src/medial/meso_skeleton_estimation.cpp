@@ -201,6 +201,7 @@ preprocessCloud(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, bool h
   input_to_working = preprocessing.getInputToWorking();
   stats.working_points = working.size();
   stats.normals_estimated = preprocessing.getNormalsEstimated();
+  stats.smoothing_passes = preprocessing.getSmoothingPassesApplied();
   stats.seconds_preprocessing = secondsSince(start);
   return true;
 }

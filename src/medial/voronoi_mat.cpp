@@ -8,6 +8,8 @@
 #include <segmat/geometry/winding_number.h>
 #include <segmat/medial/voronoi_mat.h>
 
+#include "../common/splitmix.h"
+
 #include <pcl/console/print.h>
 
 #include <Eigen/Geometry>
@@ -33,11 +35,8 @@ secondsSince(Clock::time_point start)
 double
 hashToUnit(std::uint64_t counter)
 {
-  std::uint64_t z = counter + 0x9E3779B97F4A7C15ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0) - 0.5;
+  return static_cast<double>(detail::splitmix64(counter) >> 11) * (1.0 / 9007199254740992.0) -
+         0.5;
 }
 
 /** Circumcentre of tetrahedron (a, b, c, d); false when it is flat. Solved relative to a:

@@ -19,6 +19,23 @@
 
 namespace segmat {
 namespace detail {
+namespace {
+/// Adds each stage of \a more to the stage of the same name in \a total, appending new ones.
+void
+addStageSeconds(const std::vector<std::pair<std::string, double>>& more,
+                std::vector<std::pair<std::string, double>>& total)
+{
+  for (const auto& stage : more) {
+    auto mine = std::find_if(total.begin(), total.end(),
+                             [&](const auto& t) { return t.first == stage.first; });
+    if (mine == total.end())
+      total.push_back(stage);
+    else
+      mine->second += stage.second;
+  }
+}
+} // namespace
+
 bool
 medialPointGraph(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton, int k, MatGraph::Ptr& graph)
 {
@@ -98,10 +115,7 @@ retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working
     graph = other_graph;
     tags = std::move(other_tags);
   }
-  for (const auto& stage : other_seconds)
-    for (auto& mine : stage_seconds)
-      if (mine.first == stage.first)
-        mine.second += stage.second;
+  addStageSeconds(other_seconds, stage_seconds);
   return keep;
 }
 
@@ -164,6 +178,105 @@ segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
   label_parts = transfer.getLabelParts();
   stage_seconds.emplace_back("transfer", lap());
   return true;
+}
+
+double
+randDistance(const std::vector<int>& a, const std::vector<int>& b)
+{
+  const std::size_t n = std::min(a.size(), b.size());
+  int labels_a = 0, labels_b = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (a[i] >= 0 && b[i] >= 0) {
+      labels_a = std::max(labels_a, a[i] + 1);
+      labels_b = std::max(labels_b, b[i] + 1);
+    }
+  std::vector<double> joint(std::size_t(labels_a) * labels_b, 0.0), count_a(labels_a, 0.0),
+      count_b(labels_b, 0.0);
+  double total = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (a[i] >= 0 && b[i] >= 0) {
+      joint[std::size_t(a[i]) * labels_b + b[i]] += 1.0;
+      count_a[a[i]] += 1.0;
+      count_b[b[i]] += 1.0;
+      total += 1.0;
+    }
+  if (total < 2.0)
+    return 0.0;
+  // Pairs split by exactly one labeling: together in a + together in b − 2 · together in both.
+  auto pairs = [](double m) { return 0.5 * m * (m - 1.0); };
+  double split = 0.0;
+  for (double m : count_a)
+    split += pairs(m);
+  for (double m : count_b)
+    split += pairs(m);
+  for (double m : joint)
+    split -= 2.0 * pairs(m);
+  return split / pairs(total);
+}
+
+int
+consensusLabeling(const std::vector<std::vector<int>>& labelings)
+{
+  const int count = static_cast<int>(labelings.size());
+  std::vector<double> summed(count, 0.0);
+  for (int i = 0; i < count; ++i)
+    for (int j = i + 1; j < count; ++j) {
+      const double d = randDistance(labelings[i], labelings[j]);
+      summed[i] += d;
+      summed[j] += d;
+    }
+  int best = count > 0 ? 0 : -1;
+  for (int i = 1; i < count; ++i)
+    if (summed[i] < summed[best])
+      best = i;
+  return best;
+}
+
+MedialMeshRunStatus
+segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs, bool retry,
+                      int orientation_k, int transfer_k, bool visibility,
+                      CloudMedialMeshEstimation& estimation, MatRegionGrowing& grower,
+                      CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
+                      std::vector<std::pair<std::string, double>>& stage_seconds)
+{
+  chosen = -1;
+  const unsigned int own_seed = estimation.getSampleOrderSeed();
+  std::vector<MedialMeshRun> done;
+  std::vector<int> run_of; // run number of each entry of done
+  for (int run = 0; run < std::max(1, runs); ++run) {
+    MedialMeshRun r;
+    r.working.reset(new pcl::PointCloud<pcl::PointNormal>(working));
+    // Run 0 keeps the caller's order, so one run is exactly the plain pipeline.
+    const unsigned int seed = run == 0 ? own_seed : own_seed + static_cast<unsigned int>(run);
+    estimation.setSampleOrderSeed(seed);
+    std::vector<std::pair<std::string, double>> seconds;
+    const bool medial = medialMeshGraph(r.working, estimation, r.base, r.structured, r.graph,
+                                        r.tags, seconds);
+    if (medial && retry)
+      retryFragmentedWithMirrorNormals(r.working, orientation_k, estimation, r.base,
+                                       r.structured, r.graph, r.tags, seconds);
+    estimation.setSampleOrderSeed(own_seed);
+    if (!medial) {
+      addStageSeconds(seconds, stage_seconds);
+      if (run == 0)
+        return MedialMeshRunStatus::NoMedialAxis;
+      continue; // another thinning of the same cloud: skip it, the others stand
+    }
+    if (!segmentWorkingCloud(r.graph, r.tags, *r.working, transfer_k, visibility, grower, transfer,
+                             r.working_labels, r.label_parts, r.parts, seconds))
+      return MedialMeshRunStatus::Failed;
+    addStageSeconds(seconds, stage_seconds);
+    done.push_back(std::move(r));
+    run_of.push_back(run);
+  }
+  std::vector<std::vector<int>> labelings;
+  for (MedialMeshRun& r : done)
+    labelings.push_back(std::move(r.working_labels));
+  const int kept = consensusLabeling(labelings);
+  result = std::move(done[kept]);
+  result.working_labels = std::move(labelings[kept]);
+  chosen = run_of[kept];
+  return MedialMeshRunStatus::Segmented;
 }
 
 void

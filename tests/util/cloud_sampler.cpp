@@ -4,9 +4,11 @@
  */
 #include "cloud_sampler.h"
 
+#include <segmat/segmentation/cloud_segmentation.h>
+
+
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <stdexcept>
 
 namespace segmat {
@@ -254,27 +256,9 @@ discCloud(std::size_t count, std::uint32_t seed)
 double
 randIndexError(const std::vector<int>& a, const std::vector<int>& b)
 {
-  const std::size_t n = a.size();
-  if (b.size() != n)
+  if (b.size() != a.size())
     throw std::invalid_argument("randIndexError: labelings of different sizes");
-  if (n < 2)
-    return 0.0;
-  std::map<int, double> ca, cb;
-  std::map<std::pair<int, int>, double> cab;
-  for (std::size_t i = 0; i < n; ++i) {
-    ca[a[i]] += 1;
-    cb[b[i]] += 1;
-    cab[{a[i], b[i]}] += 1;
-  }
-  auto pairs = [](double k) { return k * (k - 1) / 2; };
-  double sa = 0, sb = 0, sab = 0;
-  for (const auto& kv : ca)
-    sa += pairs(kv.second);
-  for (const auto& kv : cb)
-    sb += pairs(kv.second);
-  for (const auto& kv : cab)
-    sab += pairs(kv.second);
-  return (sa + sb - 2 * sab) / pairs(double(n));
+  return detail::randDistance(a, b);
 }
 
 } // namespace test

@@ -178,6 +178,14 @@ public:
     return normals_estimated_;
   }
 
+  /** \brief Smoothing passes the last compute() applied: 0 for a clean cloud (or one whose
+   * normals were used), 1 or more when it found the cloud noisy. */
+  int
+  getSmoothingPassesApplied() const
+  {
+    return smoothing_passes_;
+  }
+
 private:
   PointCloudIn::ConstPtr input_;
   std::size_t working_size_;
@@ -189,6 +197,7 @@ private:
   std::vector<int> working_indices_;
   std::vector<int> input_to_working_;
   bool normals_estimated_ = false;
+  int smoothing_passes_ = 0;
 };
 
 } // namespace segmat

@@ -88,6 +88,50 @@ segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
                     std::vector<pcl::PointIndices>& parts,
                     std::vector<std::pair<std::string, double>>& stage_seconds);
 
+/** \brief 1 − Rand index of two labelings of the same points (the share of point pairs that
+ * one puts together and the other apart); entries < 0 in either are skipped. O(n + L_a·L_b).
+ * 0 for identical partitions, whatever the label numbers. */
+double
+randDistance(const std::vector<int>& a, const std::vector<int>& b);
+
+/** \brief The consensus of several labelings of the same points: the one with the least summed
+ * randDistance() to the others (their medoid, as in cluster ensembles; Strehl & Ghosh, "Cluster
+ * ensembles", JMLR 2002). Ties go to the lower index; -1 when \a labelings is empty. */
+int
+consensusLabeling(const std::vector<std::vector<int>>& labelings);
+
+/** \brief One segmentation of the working cloud through its medial mesh. */
+struct MedialMeshRun
+{
+  pcl::PointCloud<pcl::PointNormal>::Ptr working; ///< with the normals the run used
+  MedialMesh base, structured;
+  MatGraph::Ptr graph;
+  StructureTags tags;
+  std::vector<int> working_labels, label_parts; ///< as segmentWorkingCloud()
+  std::vector<pcl::PointIndices> parts;         ///< as segmentWorkingCloud()
+};
+
+/** \brief How segmentWithMedialMesh() ended. */
+enum class MedialMeshRunStatus
+{
+  Segmented,     ///< \a result holds the chosen run
+  NoMedialAxis,  ///< the first run found no medial axis (one part, for the caller)
+  Failed         ///< a later stage failed (PCL_ERROR said which)
+};
+
+/** \brief The medial-mesh branch of CloudSegmentation::segment(): medial mesh, graph and tags
+ * (with the mirror-normal retry when \a retry), growing and transfer — \a runs times with the
+ * Voronoi samples thinned in different orders (seed 0 = the cloud's order first), keeping
+ * consensusLabeling() of the runs' working labels. Each run works on its own copy of
+ * \a working. Stage seconds are summed over the runs.
+ * \param[out] chosen the index of the kept run */
+MedialMeshRunStatus
+segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs, bool retry,
+                      int orientation_k, int transfer_k, bool visibility,
+                      CloudMedialMeshEstimation& estimation, MatRegionGrowing& grower,
+                      CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
+                      std::vector<std::pair<std::string, double>>& stage_seconds);
+
 /** \brief Input labels from working labels, renumbered by descending point count (ties: the
  * lower label first); parts[l] lists the input points of label l, ascending.
  * \param[in] input_to_working per input point, its working point (-1: no label)
@@ -218,6 +262,50 @@ public:
   getFragmentedMatRetryFlag() const
   {
     return fragmented_mat_retry_;
+  }
+
+  /** \brief Segmentations of a noisy cloud from which one consensus is kept (>= 1, default 5;
+   * 1: a single run). Noise makes the medial mesh foam, and which foam sheets survive Q-MAT
+   * depends on which samples the Voronoi step keeps: single runs of one noisy cloud differ by
+   * tenths of RI. With the medial mesh, each run thins the samples in another order
+   * (CloudMedialMeshEstimation::setSampleOrderSeed) and the run whose working labels agree most
+   * with the others' (detail::consensusLabeling: the medoid under the Rand distance) is kept;
+   * a run that fragments the cloud by chance disagrees with all the others. A cloud counts as
+   * noisy when the preprocessing smoothed it (estimated normals, noise above 10 % of the point
+   * spacing); clean clouds get one run unless setConsensusForEveryCloudFlag(). Costs one
+   * medial step, growing and transfer per run. */
+  void
+  setConsensusRuns(int runs);
+
+  /** \brief Segmentations of a noisy cloud from which one consensus is kept. */
+  int
+  getConsensusRuns() const
+  {
+    return consensus_runs_;
+  }
+
+  /** \brief Apply setConsensusRuns() to every cloud, not only to noisy ones (default false;
+   * e.g. for noisy scans that come with their own normals, which are not smoothed or measured).
+   */
+  void
+  setConsensusForEveryCloudFlag(bool flag)
+  {
+    consensus_every_cloud_ = flag;
+  }
+
+  /** \brief Whether every cloud gets the consensus runs. */
+  bool
+  getConsensusForEveryCloudFlag() const
+  {
+    return consensus_every_cloud_;
+  }
+
+  /** \brief Runs the last segment() made (1 for a clean cloud; 0 before any) and the index of
+   * the one it kept. */
+  std::pair<int, int>
+  getConsensusRunsMade() const
+  {
+    return {runs_made_, run_kept_};
   }
 
   /** \brief Test visibility inside the medial balls before merging parts (default true). */
@@ -375,6 +463,10 @@ private:
   int k_ = 10;
   bool visibility_ = true;
   bool fragmented_mat_retry_ = true;
+  int consensus_runs_ = 5;
+  bool consensus_every_cloud_ = false;
+  int runs_made_ = 0;
+  int run_kept_ = 0;
 
   MedialMesh base_, structured_;
   pcl::PointCloud<pcl::PointNormal>::Ptr working_;

@@ -38,6 +38,18 @@ CloudSegmentation<PointT>::setKSearch(int k)
 }
 
 template <typename PointT>
+void
+CloudSegmentation<PointT>::setConsensusRuns(int runs)
+{
+  if (runs < 1) {
+    PCL_WARN("[segmat::CloudSegmentation::setConsensusRuns] At least 1 run; keeping %d.\n",
+             consensus_runs_);
+    return;
+  }
+  consensus_runs_ = runs;
+}
+
+template <typename PointT>
 bool
 CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
 {
@@ -58,6 +70,11 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
 
   base_ = MedialMesh();
   structured_ = MedialMesh();
+  runs_made_ = 1;
+  run_kept_ = 0;
+  // Filled by the medial-mesh branch, or by segmentWorkingCloud() below for the meso-skeleton.
+  std::vector<int> working_labels, label_parts;
+  std::vector<pcl::PointIndices> grown;
   working_.reset(new pcl::PointCloud<pcl::PointNormal>);
   input_to_working_.clear();
   MatGraph::Ptr graph;
@@ -73,11 +90,28 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
                                 *working_, working_indices, copy_to_working, stats)) {
       stage_seconds_.emplace_back("preprocessing", stats.seconds_preprocessing);
       input_to_working_ = detail::inputToWorking(input_->size(), *indices_, copy_to_working);
-      medial_ok = detail::medialMeshGraph(working_, mesh_estimation_, base_, structured_, graph,
-                                          tags, stage_seconds_);
-      if (medial_ok && stats.normals_estimated && fragmented_mat_retry_)
-        detail::retryFragmentedWithMirrorNormals(working_, params.orientation_k, mesh_estimation_,
-                                                 base_, structured_, graph, tags, stage_seconds_);
+      const bool noisy = stats.smoothing_passes > 0;
+      runs_made_ = noisy || consensus_every_cloud_ ? consensus_runs_ : 1;
+      detail::MedialMeshRun run;
+      const detail::MedialMeshRunStatus status = detail::segmentWithMedialMesh(
+          *working_, runs_made_, stats.normals_estimated && fragmented_mat_retry_,
+          params.orientation_k, k_, visibility_, mesh_estimation_, grower_, transfer_, run,
+          run_kept_, stage_seconds_);
+      if (status == detail::MedialMeshRunStatus::Failed) {
+        stage_seconds_.clear();
+        deinitCompute();
+        return false;
+      }
+      medial_ok = status == detail::MedialMeshRunStatus::Segmented;
+      if (medial_ok) {
+        working_ = run.working;
+        base_ = std::move(run.base);
+        structured_ = std::move(run.structured);
+        graph = run.graph;
+        working_labels = std::move(run.working_labels);
+        label_parts = std::move(run.label_parts);
+        grown = std::move(run.parts);
+      }
     }
   }
   else {
@@ -127,9 +161,8 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
   }
   graph_ = graph;
 
-  std::vector<int> working_labels, label_parts;
-  std::vector<pcl::PointIndices> grown;
-  if (!detail::segmentWorkingCloud(graph, tags, *working_, k_, visibility_, grower_, transfer_,
+  if (medial_axis_ == CloudMedialAxis::MesoSkeleton &&
+      !detail::segmentWorkingCloud(graph, tags, *working_, k_, visibility_, grower_, transfer_,
                                    working_labels, label_parts, grown, stage_seconds_)) {
     stage_seconds_.clear();
     deinitCompute();
