@@ -427,10 +427,11 @@ TEST(CloudSegmentation, NoisyBearingIsTheConsensusOfFiveRuns)
   std::vector<std::vector<int>> truths;
   const SampledCloud noisy = noisyPsbCloud(346, truths);
   const auto cloud = noisy.toCloud<pcl::PointXYZ>();
-  auto segment = [&](int runs, unsigned int seed, std::pair<int, int>& made) {
+  auto segment = [&](int runs, unsigned int seed, std::pair<int, int>& made,
+                     unsigned int threads = 1) {
     CloudSegmentation<pcl::PointXYZ> seg;
     seg.setInputCloud(cloud);
-    seg.setNumberOfThreads(1);
+    seg.setNumberOfThreads(threads);
     seg.setConsensusRuns(runs);
     seg.getMedialMeshEstimation().setSampleOrderSeed(seed);
     std::vector<pcl::PointIndices> parts;
@@ -450,4 +451,8 @@ TEST(CloudSegmentation, NoisyBearingIsTheConsensusOfFiveRuns)
   EXPECT_LT(score(consensus), 0.17);
   // The kept run is that sample order's own segmentation: one run with its seed gives it again.
   EXPECT_EQ(segment(1, static_cast<unsigned int>(consensus_made.second), kept_made), consensus);
+  // Runs side by side on three threads: the same consensus.
+  std::pair<int, int> threaded_made;
+  EXPECT_EQ(segment(5, 0, threaded_made, 3), consensus);
+  EXPECT_EQ(threaded_made, consensus_made);
 }

@@ -10,12 +10,15 @@
 #include <segmat/segmentation/impl/cloud_segmentation.hpp>
 #include <segmat/segmentation/structure_tags.h>
 
+#include "../medial/thread_count.h"
+
 #include <pcl/console/print.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <numeric>
+#include <stdexcept>
 
 namespace segmat {
 namespace detail {
@@ -234,48 +237,64 @@ consensusLabeling(const std::vector<std::vector<int>>& labelings)
 
 MedialMeshRunStatus
 segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs, bool retry,
-                      int orientation_k, int transfer_k, bool visibility,
-                      CloudMedialMeshEstimation& estimation, MatRegionGrowing& grower,
-                      CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
+                      int orientation_k, int transfer_k, bool visibility, unsigned int threads,
+                      const CloudMedialMeshEstimation& estimation, const MatRegionGrowing& grower,
+                      const CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
                       std::vector<std::pair<std::string, double>>& stage_seconds)
 {
   chosen = -1;
+  runs = std::max(1, runs);
   const unsigned int own_seed = estimation.getSampleOrderSeed();
-  std::vector<MedialMeshRun> done;
-  std::vector<int> run_of; // run number of each entry of done
-  for (int run = 0; run < std::max(1, runs); ++run) {
-    MedialMeshRun r;
-    r.working.reset(new pcl::PointCloud<pcl::PointNormal>(working));
-    // Run 0 keeps the caller's order, so one run is exactly the plain pipeline.
-    const unsigned int seed = run == 0 ? own_seed : own_seed + static_cast<unsigned int>(run);
-    estimation.setSampleOrderSeed(seed);
-    std::vector<std::pair<std::string, double>> seconds;
-    const bool medial = medialMeshGraph(r.working, estimation, r.base, r.structured, r.graph,
-                                        r.tags, seconds);
-    if (medial && retry)
-      retryFragmentedWithMirrorNormals(r.working, orientation_k, estimation, r.base,
-                                       r.structured, r.graph, r.tags, seconds);
-    estimation.setSampleOrderSeed(own_seed);
-    if (!medial) {
-      addStageSeconds(seconds, stage_seconds);
-      if (run == 0)
-        return MedialMeshRunStatus::NoMedialAxis;
-      continue; // another thinning of the same cloud: skip it, the others stand
+  std::vector<MedialMeshRun> done(runs);
+  std::vector<MedialMeshRunStatus> status(runs, MedialMeshRunStatus::Failed);
+  std::vector<std::vector<std::pair<std::string, double>>> seconds(runs);
+  // The runs are independent, each with its own copies of the stages (their parameters), so
+  // they may run side by side; each run's result does not depend on which thread made it.
+  // Steps inside a run then get one thread (OpenMP does not nest by default).
+#pragma omp parallel for schedule(dynamic, 1) num_threads(std::min(threadCount(threads), runs))
+  for (int run = 0; run < runs; ++run) {
+    try {
+      MedialMeshRun& r = done[run];
+      CloudMedialMeshEstimation run_estimation = estimation;
+      MatRegionGrowing run_grower = grower;
+      CloudLabelTransfer run_transfer = transfer;
+      r.working.reset(new pcl::PointCloud<pcl::PointNormal>(working));
+      // Run 0 keeps the caller's order, so one run is exactly the plain pipeline.
+      run_estimation.setSampleOrderSeed(own_seed + static_cast<unsigned int>(run));
+      if (!medialMeshGraph(r.working, run_estimation, r.base, r.structured, r.graph, r.tags,
+                           seconds[run])) {
+        status[run] = MedialMeshRunStatus::NoMedialAxis;
+        continue;
+      }
+      if (retry)
+        retryFragmentedWithMirrorNormals(r.working, orientation_k, run_estimation, r.base,
+                                         r.structured, r.graph, r.tags, seconds[run]);
+      if (segmentWorkingCloud(r.graph, r.tags, *r.working, transfer_k, visibility, run_grower,
+                              run_transfer, r.working_labels, r.label_parts, r.parts,
+                              seconds[run]))
+        status[run] = MedialMeshRunStatus::Segmented;
     }
-    if (!segmentWorkingCloud(r.graph, r.tags, *r.working, transfer_k, visibility, grower, transfer,
-                             r.working_labels, r.label_parts, r.parts, seconds))
-      return MedialMeshRunStatus::Failed;
-    addStageSeconds(seconds, stage_seconds);
-    done.push_back(std::move(r));
-    run_of.push_back(run);
+    catch (const std::exception& e) { // out of memory, most likely: the run is lost, not the process
+      PCL_ERROR("[segmat::CloudSegmentation::segment] Run %d failed: %s\n", run, e.what());
+    }
   }
+  for (const auto& run_seconds : seconds)
+    addStageSeconds(run_seconds, stage_seconds);
+  // Run 0 is the plain pipeline: its outcome stands for the cloud; a later run that fails is
+  // another thinning of the same cloud and is left out.
+  if (status[0] != MedialMeshRunStatus::Segmented)
+    return status[0];
   std::vector<std::vector<int>> labelings;
-  for (MedialMeshRun& r : done)
-    labelings.push_back(std::move(r.working_labels));
+  std::vector<int> run_of; // run number of each labeling
+  for (int run = 0; run < runs; ++run)
+    if (status[run] == MedialMeshRunStatus::Segmented) {
+      labelings.push_back(std::move(done[run].working_labels));
+      run_of.push_back(run);
+    }
   const int kept = consensusLabeling(labelings);
-  result = std::move(done[kept]);
-  result.working_labels = std::move(labelings[kept]);
   chosen = run_of[kept];
+  result = std::move(done[chosen]);
+  result.working_labels = std::move(labelings[kept]);
   return MedialMeshRunStatus::Segmented;
 }
 

@@ -121,15 +121,17 @@ enum class MedialMeshRunStatus
 
 /** \brief The medial-mesh branch of CloudSegmentation::segment(): medial mesh, graph and tags
  * (with the mirror-normal retry when \a retry), growing and transfer — \a runs times with the
- * Voronoi samples thinned in different orders (seed 0 = the cloud's order first), keeping
- * consensusLabeling() of the runs' working labels. Each run works on its own copy of
- * \a working. Stage seconds are summed over the runs.
- * \param[out] chosen the index of the kept run */
+ * Voronoi samples thinned in different orders (run r: sample order seed = \a estimation's + r,
+ * so run 0 is the plain pipeline), keeping consensusLabeling() of the runs' working labels.
+ * Each run works on its own copies of \a working and of the three stages; up to \a threads
+ * runs go side by side (0: OpenMP's choice; the result does not depend on it). Stage seconds are summed over the
+ * runs. Run 0 decides the outcome; a later run that fails is left out.
+ * \param[out] chosen the run kept */
 MedialMeshRunStatus
 segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs, bool retry,
-                      int orientation_k, int transfer_k, bool visibility,
-                      CloudMedialMeshEstimation& estimation, MatRegionGrowing& grower,
-                      CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
+                      int orientation_k, int transfer_k, bool visibility, unsigned int threads,
+                      const CloudMedialMeshEstimation& estimation, const MatRegionGrowing& grower,
+                      const CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
                       std::vector<std::pair<std::string, double>>& stage_seconds);
 
 /** \brief Input labels from working labels, renumbered by descending point count (ties: the

@@ -95,8 +95,8 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
       detail::MedialMeshRun run;
       const detail::MedialMeshRunStatus status = detail::segmentWithMedialMesh(
           *working_, runs_made_, stats.normals_estimated && fragmented_mat_retry_,
-          params.orientation_k, k_, visibility_, mesh_estimation_, grower_, transfer_, run,
-          run_kept_, stage_seconds_);
+          params.orientation_k, k_, visibility_, params.threads,
+          mesh_estimation_, grower_, transfer_, run, run_kept_, stage_seconds_);
       if (status == detail::MedialMeshRunStatus::Failed) {
         stage_seconds_.clear();
         deinitCompute();
