@@ -176,9 +176,9 @@ main(int argc, char** argv)
       std::printf("], \"seconds\": {");
       for (std::size_t k = 0; k < seconds.size(); ++k)
         std::printf("%s\"%s\": %.6f", k ? ", " : "", seconds[k].first.c_str(), seconds[k].second);
-      const auto runs = segmentation.getConsensusRunsMade();
-      std::printf("}, \"runs\": [%d, %d], \"origin\": [%.17g, %.17g, %.17g]}\n", runs.first,
-                  runs.second, loaded.origin.x(), loaded.origin.y(), loaded.origin.z());
+      std::printf("}, \"runs\": [%d, %d], \"origin\": [%.17g, %.17g, %.17g]}\n",
+                  segmentation.getConsensusRunsMade(), segmentation.getConsensusRunKept(),
+                  loaded.origin.x(), loaded.origin.y(), loaded.origin.z());
     }
     else {
       std::printf("parts: %zu\npoint counts:", parts.size());
@@ -187,10 +187,9 @@ main(int argc, char** argv)
       std::printf("\nseconds:");
       for (const auto& stage : seconds)
         std::printf(" %s %.4f", stage.first.c_str(), stage.second);
-      const auto runs = segmentation.getConsensusRunsMade();
-      if (runs.first > 1)
+      if (segmentation.getConsensusRunsMade() > 1)
         std::printf("\nruns: %d (noisy cloud; kept run %d, the consensus; seconds are summed)",
-                    runs.first, runs.second);
+                    segmentation.getConsensusRunsMade(), segmentation.getConsensusRunKept());
       if (!loaded.origin.isZero())
         std::printf("\norigin: %.17g %.17g %.17g (the file's points lie far from 0: segmented "
                     "relative to this point, written back in the file's frame)",

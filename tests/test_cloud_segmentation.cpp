@@ -436,7 +436,7 @@ TEST(CloudSegmentation, NoisyBearingIsTheConsensusOfFiveRuns)
     seg.getMedialMeshEstimation().setSampleOrderSeed(seed);
     std::vector<pcl::PointIndices> parts;
     EXPECT_TRUE(seg.segment(parts));
-    made = seg.getConsensusRunsMade();
+    made = {seg.getConsensusRunsMade(), seg.getConsensusRunKept()};
     return seg.getLabels();
   };
   auto score = [&](const std::vector<int>& labels) { return meanRandIndexError(labels, truths); };

@@ -302,12 +302,20 @@ public:
     return consensus_every_cloud_;
   }
 
-  /** \brief Runs the last segment() made (1 for a clean cloud; 0 before any) and the index of
-   * the one it kept. */
-  std::pair<int, int>
+  /** \brief Runs the last segment() made: 1 for a clean cloud (and the meso-skeleton), the
+   * consensus runs for a noisy one; 0 before any. */
+  int
   getConsensusRunsMade() const
   {
-    return {runs_made_, run_kept_};
+    return runs_made_;
+  }
+
+  /** \brief The run whose segmentation the last segment() kept (0 with a single run); one run
+   * with CloudMedialMeshEstimation::setSampleOrderSeed(seed + kept run) repeats it. */
+  int
+  getConsensusRunKept() const
+  {
+    return run_kept_;
   }
 
   /** \brief Test visibility inside the medial balls before merging parts (default true). */
