@@ -39,7 +39,7 @@ const char* const kUsage =
     "  --meso-skeleton    medial axis from shrinking balls (no faces) instead of the default\n"
     "                     Voronoi medial mesh of the points\n"
     "  --save-mat         also write PREFIX_base.ma and PREFIX_struct.ma (medial mesh only)\n"
-    "  --runs N           segmentations of a noisy cloud to keep the consensus of (default 5;\n"
+    "  --runs N           segmentations of a noisy cloud to keep the consensus of (default 9;\n"
     "                     1: one run). --runs-always: for every cloud, not only noisy ones\n"
     "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"
     "  --json             print one JSON object: parts, point_counts, seconds per stage\n"

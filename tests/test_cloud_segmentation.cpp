@@ -378,14 +378,14 @@ TEST(CloudSegmentation, SettersKeepValidValues)
   EXPECT_EQ(seg.getKSearch(), 10);
   EXPECT_TRUE(seg.getUseInputNormalsFlag());
   EXPECT_TRUE(seg.getVisibilityFlag());
-  EXPECT_EQ(seg.getConsensusRuns(), 5);
+  EXPECT_EQ(seg.getConsensusRuns(), 9);
   EXPECT_FALSE(seg.getConsensusForEveryCloudFlag());
   seg.setKSearch(0);
   seg.setWorkingSize(0);
   seg.setConsensusRuns(0);
   EXPECT_EQ(seg.getKSearch(), 10);
   EXPECT_EQ(seg.getWorkingSize(), 20000u);
-  EXPECT_EQ(seg.getConsensusRuns(), 5);
+  EXPECT_EQ(seg.getConsensusRuns(), 9);
 }
 
 TEST(CloudSegmentation, NoisyChairWhoseMatFallsApartIsRetriedWithMirrorNormals)
