@@ -170,6 +170,9 @@ labelInputPoints(const std::vector<int>& input_to_working, const std::vector<int
  *     data term = distance to each part's balls, crease-aware smoothness from the oriented
  *     normals; two cycles, as the reference); every input point then takes the label of the
  *     working point standing for it (its voxel's representative): "labels".
+ * With the medial mesh (the default axis, CloudMedialAxis::MedialMesh), a cloud that the
+ * preprocessing finds noisy goes through stages 2–5 several times with differently thinned
+ * Voronoi samples, and the consensus run is kept (setConsensusRuns).
  * Parts are numbered by descending point count. A cloud that encloses no volume (a flat patch,
  * a handful of points) is one part, with a warning.
  *
