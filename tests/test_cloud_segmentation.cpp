@@ -437,6 +437,9 @@ TEST(CloudSegmentation, NoisyBearingIsTheConsensusOfFiveRuns)
     std::vector<pcl::PointIndices> parts;
     EXPECT_TRUE(seg.segment(parts));
     made = {seg.getConsensusRunsMade(), seg.getConsensusRunKept()};
+    // The estimation reports the kept run and keeps the caller's seed.
+    EXPECT_GT(seg.getMedialMeshEstimation().getStatistics().initial_spheres, 0u);
+    EXPECT_EQ(seg.getMedialMeshEstimation().getSampleOrderSeed(), seed);
     return seg.getLabels();
   };
   auto score = [&](const std::vector<int>& labels) { return meanRandIndexError(labels, truths); };

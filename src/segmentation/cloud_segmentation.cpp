@@ -238,7 +238,7 @@ consensusLabeling(const std::vector<std::vector<int>>& labelings)
 MedialMeshRunStatus
 segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs, bool retry,
                       int orientation_k, int transfer_k, bool visibility, unsigned int threads,
-                      const CloudMedialMeshEstimation& estimation, const MatRegionGrowing& grower,
+                      CloudMedialMeshEstimation& estimation, const MatRegionGrowing& grower,
                       const CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
                       std::vector<std::pair<std::string, double>>& stage_seconds)
 {
@@ -248,6 +248,8 @@ segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs
   std::vector<MedialMeshRun> done(runs);
   std::vector<MedialMeshRunStatus> status(runs, MedialMeshRunStatus::Failed);
   std::vector<std::vector<std::pair<std::string, double>>> seconds(runs);
+  // Each run's estimation is kept: the kept one goes back to the caller (statistics, splats).
+  std::vector<CloudMedialMeshEstimation> estimations(runs, estimation);
   // The runs are independent, each with its own copies of the stages (their parameters), so
   // they may run side by side; each run's result does not depend on which thread made it.
   // Steps inside a run then get one thread (OpenMP does not nest by default).
@@ -255,7 +257,7 @@ segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs
   for (int run = 0; run < runs; ++run) {
     try {
       MedialMeshRun& r = done[run];
-      CloudMedialMeshEstimation run_estimation = estimation;
+      CloudMedialMeshEstimation& run_estimation = estimations[run];
       MatRegionGrowing run_grower = grower;
       CloudLabelTransfer run_transfer = transfer;
       r.working.reset(new pcl::PointCloud<pcl::PointNormal>(working));
@@ -282,8 +284,11 @@ segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs
     addStageSeconds(run_seconds, stage_seconds);
   // Run 0 is the plain pipeline: its outcome stands for the cloud; a later run that fails is
   // another thinning of the same cloud and is left out.
-  if (status[0] != MedialMeshRunStatus::Segmented)
+  if (status[0] != MedialMeshRunStatus::Segmented) {
+    estimation = std::move(estimations[0]);
+    estimation.setSampleOrderSeed(own_seed);
     return status[0];
+  }
   std::vector<std::vector<int>> labelings;
   std::vector<int> run_of; // run number of each labeling
   for (int run = 0; run < runs; ++run)
@@ -293,6 +298,8 @@ segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs
     }
   const int kept = consensusLabeling(labelings);
   chosen = run_of[kept];
+  estimation = std::move(estimations[chosen]);
+  estimation.setSampleOrderSeed(own_seed);
   result = std::move(done[chosen]);
   result.working_labels = std::move(labelings[kept]);
   return MedialMeshRunStatus::Segmented;

@@ -125,12 +125,13 @@ enum class MedialMeshRunStatus
  * so run 0 is the plain pipeline), keeping consensusLabeling() of the runs' working labels.
  * Each run works on its own copies of \a working and of the three stages; up to \a threads
  * runs go side by side (0: OpenMP's choice; the result does not depend on it). Stage seconds are summed over the
- * runs. Run 0 decides the outcome; a later run that fails is left out.
+ * runs. Run 0 decides the outcome; a later run that fails is left out. \a estimation ends up
+ * as the kept run's (its statistics and splat surface; its own sample order seed).
  * \param[out] chosen the run kept */
 MedialMeshRunStatus
 segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs, bool retry,
                       int orientation_k, int transfer_k, bool visibility, unsigned int threads,
-                      const CloudMedialMeshEstimation& estimation, const MatRegionGrowing& grower,
+                      CloudMedialMeshEstimation& estimation, const MatRegionGrowing& grower,
                       const CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
                       std::vector<std::pair<std::string, double>>& stage_seconds);
 
