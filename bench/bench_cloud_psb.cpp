@@ -12,7 +12,7 @@
  * Usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6,...] [--json] [--conditions abc]
  *        [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] [--reference-crease]
  *        [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F]
- *        [--consensus-runs N]
+ *        [--consensus-runs N] [--consensus-merge F]
  *   PSB_DIR defaults to ../shared/data/psb-dev (off/N.off, seg/Benchmark/N/N_k.seg).
  *   --dump DIR writes DIR/<model>_<a|b|c>.txt: "x y z label truth nx ny nz" per point (the
  *   cloud as segmented, our label, the first human's label, the sample's true normal).
@@ -27,6 +27,8 @@
  *   (setMinRegionFraction / setSmoothnessWeight; defaults: the library's).
  *   --consensus-runs N segmentations of a noisy cloud to take the consensus of
  *   (CloudSegmentation::setConsensusRuns; 1: a single run as before the consensus).
+ *   --consensus-merge F co-association above which the consensus run's adjacent parts merge
+ *   (CloudSegmentation::setConsensusMergeThreshold; 2: none).
  */
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"
@@ -84,6 +86,7 @@ struct Settings
   double eta = -1.0;      ///< minimal region fraction η (< 0: the library's)
   double omega = -1.0;    ///< transfer smoothness ω (< 0: the library's)
   int consensus_runs = -1; ///< runs of a noisy cloud (< 0: the library's)
+  double consensus_merge = -1.0; ///< merge threshold (< 0: the library's)
 };
 
 /// The mesh path's face labels scored on \a sampled's points (1 − RI, mean over humans); with
@@ -127,6 +130,8 @@ run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int
     seg.setSmoothnessWeight(settings.omega);
   if (settings.consensus_runs > 0)
     seg.setConsensusRuns(settings.consensus_runs);
+  if (settings.consensus_merge >= 0.0)
+    seg.setConsensusMergeThreshold(settings.consensus_merge);
   if (settings.meso_skeleton)
     seg.setMedialAxis(segmat::CloudMedialAxis::MesoSkeleton);
   if (settings.smoothing >= 0) {
@@ -224,6 +229,8 @@ main(int argc, char** argv)
       settings.omega = std::stod(argv[++i]);
     else if (arg == "--consensus-runs" && i + 1 < argc)
       settings.consensus_runs = std::stoi(argv[++i]);
+    else if (arg == "--consensus-merge" && i + 1 < argc)
+      settings.consensus_merge = std::stod(argv[++i]);
     else if (arg == "--no-visibility")
       settings.visibility = false;
     else if (arg == "--mesh-path")
@@ -237,7 +244,7 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json] "
                    "[--conditions abc] [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] "
-                   "[--reference-crease] [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F] [--consensus-runs N]\n";
+                   "[--reference-crease] [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F] [--consensus-runs N] [--consensus-merge F]\n";
       return 2;
     }
   }

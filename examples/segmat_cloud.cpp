@@ -41,6 +41,8 @@ const char* const kUsage =
     "  --save-mat         also write PREFIX_base.ma and PREFIX_struct.ma (medial mesh only)\n"
     "  --runs N           segmentations of a noisy cloud to keep the consensus of (default 9;\n"
     "                     1: one run). --runs-always: for every cloud, not only noisy ones\n"
+    "  --runs-merge F     merge the consensus run's adjacent parts that the runs join with a\n"
+    "                     mean co-association above F (default 0.4; above 1: no merging)\n"
     "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"
     "  --json             print one JSON object: parts, point_counts, seconds per stage\n"
     "                     (summed over the runs), runs [made, kept], origin (what a cloud far\n"
@@ -115,6 +117,12 @@ main(int argc, char** argv)
         save_mat = true;
       else if (arg == "--runs")
         segmentation.setConsensusRuns(parseInteger(arg, value(), 1));
+      else if (arg == "--runs-merge") {
+        const double threshold = parseNumber(arg, value());
+        if (!(threshold >= 0.0))
+          throw segmat::Error("option --runs-merge: the threshold must be >= 0");
+        segmentation.setConsensusMergeThreshold(threshold);
+      }
       else if (arg == "--runs-always")
         segmentation.setConsensusForEveryCloudFlag(true);
       else if (arg == "--json")

@@ -12,12 +12,15 @@
 
 #include "../medial/thread_count.h"
 
+#include <pcl/common/io.h>
 #include <pcl/console/print.h>
+#include <pcl/kdtree/kdtree_flann.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <numeric>
+#include <set>
 #include <stdexcept>
 
 namespace segmat {
@@ -235,9 +238,101 @@ consensusLabeling(const std::vector<std::vector<int>>& labelings)
   return best;
 }
 
+std::vector<int>
+mergeByConsensus(const std::vector<std::vector<int>>& labelings,
+                 const std::vector<std::pair<int, int>>& edges, double threshold,
+                 std::vector<int>& labels)
+{
+  int count = 0;
+  for (int l : labels)
+    count = std::max(count, l + 1);
+  std::vector<int> into(count);
+  std::iota(into.begin(), into.end(), 0);
+  if (labelings.empty() || count < 2)
+    return into;
+  // Per run, the contingency of the consensus parts (rows) with the run's labels: merging two
+  // parts adds their rows, so the co-association of the merged part needs no pass over points.
+  struct Table
+  {
+    int width = 0;
+    std::vector<double> joint, rows;
+  };
+  std::vector<Table> tables(labelings.size());
+  for (std::size_t r = 0; r < labelings.size(); ++r) {
+    const std::vector<int>& run = labelings[r];
+    const std::size_t n = std::min(run.size(), labels.size());
+    Table& t = tables[r];
+    for (std::size_t i = 0; i < n; ++i)
+      t.width = std::max(t.width, run[i] + 1);
+    t.joint.assign(std::size_t(count) * t.width, 0.0);
+    t.rows.assign(count, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      if (labels[i] >= 0 && run[i] >= 0) {
+        t.joint[std::size_t(labels[i]) * t.width + run[i]] += 1.0;
+        t.rows[labels[i]] += 1.0;
+      }
+  }
+  auto coAssociation = [&](int p, int q) {
+    double sum = 0.0;
+    for (const Table& t : tables) {
+      if (!(t.rows[p] > 0.0) || !(t.rows[q] > 0.0))
+        continue;
+      double together = 0.0;
+      for (int l = 0; l < t.width; ++l)
+        together += t.joint[std::size_t(p) * t.width + l] * t.joint[std::size_t(q) * t.width + l];
+      sum += together / (t.rows[p] * t.rows[q]);
+    }
+    return sum / double(tables.size());
+  };
+  std::set<std::pair<int, int>> adjacent;
+  for (const auto& [i, j] : edges) {
+    if (i < 0 || j < 0 || std::size_t(std::max(i, j)) >= labels.size())
+      continue;
+    const int p = labels[i], q = labels[j];
+    if (p >= 0 && q >= 0 && p != q)
+      adjacent.emplace(std::min(p, q), std::max(p, q));
+  }
+  while (!adjacent.empty()) {
+    double best = -1.0;
+    std::pair<int, int> pair;
+    for (const auto& candidate : adjacent) {
+      const double c = coAssociation(candidate.first, candidate.second);
+      if (c > best) {
+        best = c;
+        pair = candidate;
+      }
+    }
+    if (!(best > threshold))
+      break;
+    const auto [p, q] = pair; // p < q: q goes into p
+    for (Table& t : tables) {
+      for (int l = 0; l < t.width; ++l)
+        t.joint[std::size_t(p) * t.width + l] += t.joint[std::size_t(q) * t.width + l];
+      t.rows[p] += t.rows[q];
+      t.rows[q] = 0.0;
+    }
+    for (int& l : labels)
+      if (l == q)
+        l = p;
+    for (int& l : into)
+      if (l == q)
+        l = p;
+    std::set<std::pair<int, int>> renamed;
+    for (auto [a, b] : adjacent) {
+      a = a == q ? p : a;
+      b = b == q ? p : b;
+      if (a != b)
+        renamed.emplace(std::min(a, b), std::max(a, b));
+    }
+    adjacent.swap(renamed);
+  }
+  return into;
+}
+
 MedialMeshRunStatus
-segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs, bool retry,
-                      int orientation_k, int transfer_k, bool visibility, unsigned int threads,
+segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs,
+                      double merge_threshold, bool retry, int orientation_k, int transfer_k,
+                      bool visibility, unsigned int threads,
                       CloudMedialMeshEstimation& estimation, const MatRegionGrowing& grower,
                       const CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
                       std::vector<std::pair<std::string, double>>& stage_seconds)
@@ -301,7 +396,35 @@ segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs
   estimation = std::move(estimations[chosen]);
   estimation.setSampleOrderSeed(own_seed);
   result = std::move(done[chosen]);
-  result.working_labels = std::move(labelings[kept]);
+  result.working_labels = labelings[kept];
+  if (labelings.size() > 1 && merge_threshold <= 1.0) {
+    // The parts' adjacency: the working points' k nearest neighbours (the transfer's graph).
+    pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
+    pcl::copyPointCloud(*result.working, *xyz);
+    pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+    tree.setInputCloud(xyz);
+    std::vector<std::pair<int, int>> edges;
+    pcl::Indices found;
+    std::vector<float> distances;
+    const int k = std::min<int>(transfer_k + 1, static_cast<int>(xyz->size()));
+    for (int i = 0; i < static_cast<int>(xyz->size()); ++i) {
+      tree.nearestKSearch((*xyz)[i], k, found, distances);
+      for (const auto j : found)
+        if (j != i)
+          edges.emplace_back(i, j);
+    }
+    const std::vector<int> into =
+        mergeByConsensus(labelings, edges, merge_threshold, result.working_labels);
+    // A merged label's MAT nodes join those of the label it went into.
+    for (std::size_t l = 0; l < into.size() && l < result.label_parts.size(); ++l) {
+      if (into[l] == static_cast<int>(l))
+        continue;
+      auto& from = result.parts[result.label_parts[l]].indices;
+      auto& to = result.parts[result.label_parts[into[l]]].indices;
+      to.insert(to.end(), from.begin(), from.end());
+      from.clear();
+    }
+  }
   return MedialMeshRunStatus::Segmented;
 }
 

@@ -50,6 +50,18 @@ CloudSegmentation<PointT>::setConsensusRuns(int runs)
 }
 
 template <typename PointT>
+void
+CloudSegmentation<PointT>::setConsensusMergeThreshold(double threshold)
+{
+  if (!(threshold >= 0.0)) {
+    PCL_WARN("[segmat::CloudSegmentation::setConsensusMergeThreshold] The threshold must be "
+             ">= 0; keeping %g.\n", consensus_merge_threshold_);
+    return;
+  }
+  consensus_merge_threshold_ = threshold;
+}
+
+template <typename PointT>
 bool
 CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
 {
@@ -94,7 +106,7 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
       runs_made_ = noisy || consensus_every_cloud_ ? consensus_runs_ : 1;
       detail::MedialMeshRun run;
       const detail::MedialMeshRunStatus status = detail::segmentWithMedialMesh(
-          *working_, runs_made_, stats.normals_estimated && fragmented_mat_retry_,
+          *working_, runs_made_, consensus_merge_threshold_, stats.normals_estimated && fragmented_mat_retry_,
           params.orientation_k, k_, visibility_, params.threads,
           mesh_estimation_, grower_, transfer_, run, run_kept_, stage_seconds_);
       if (status == detail::MedialMeshRunStatus::Failed) {
