@@ -428,40 +428,50 @@ TEST(CloudSegmentation, SettersKeepValidValues)
 
 TEST(CloudSegmentation, NoisyBirdCutsThatMostRunsJoinAreMerged)
 {
-  // PSB bird 246 as bench_cloud_psb's first noise draw. The nine runs' consensus cuts a wing
-  // that most of the other runs keep whole; merging what the runs join undoes that cut.
+  // PSB bird 246 as bench_cloud_psb's first noise draw. Without merging, the medoid of the nine
+  // runs cuts the bird in parts that most of the other runs keep whole.
   std::vector<std::vector<int>> truths;
   const SampledCloud noisy = noisyPsbCloud(246, truths);
   const auto cloud = noisy.toCloud<pcl::PointXYZ>();
-  auto segment = [&](double threshold, std::size_t& count) {
+  auto segment = [&](int runs, unsigned int seed, double threshold, std::size_t& count,
+                     int& kept_run) {
     CloudSegmentation<pcl::PointXYZ> seg;
     seg.setInputCloud(cloud);
     seg.setNumberOfThreads(2);
+    seg.setConsensusRuns(runs);
     seg.setConsensusMergeThreshold(threshold);
+    seg.getMedialMeshEstimation().setSampleOrderSeed(seed);
     std::vector<pcl::PointIndices> parts;
     EXPECT_TRUE(seg.segment(parts));
-    EXPECT_EQ(seg.getConsensusRunsMade(), 9);
+    EXPECT_EQ(seg.getConsensusRunsMade(), runs);
     count = parts.size();
-    // Every part keeps MAT nodes: a merged part takes those of the part it absorbed.
+    kept_run = seg.getConsensusRunKept();
+    // Every part keeps MAT nodes: a merged part takes those of the parts it absorbed.
     for (const auto& mat_part : seg.getMatParts())
       EXPECT_FALSE(mat_part.indices.empty());
     return seg.getLabels();
   };
-  std::size_t kept_count = 0, merged_count = 0;
-  const std::vector<int> kept = segment(2.0, kept_count);
-  const std::vector<int> merged = segment(0.4, merged_count);
-  const double kept_error = meanRandIndexError(kept, truths);
+  std::size_t unmerged_count = 0, merged_count = 0, run_count = 0;
+  int unmerged_run = -1, merged_run = -1, single_run = -1;
+  const std::vector<int> unmerged = segment(9, 0, 2.0, unmerged_count, unmerged_run);
+  const std::vector<int> merged = segment(9, 0, 0.4, merged_count, merged_run);
+  const double unmerged_error = meanRandIndexError(unmerged, truths);
   const double merged_error = meanRandIndexError(merged, truths);
-  std::cout << "bird 246: kept run " << kept_count << " parts, 1 - RI " << kept_error
-            << "; merged " << merged_count << " parts, " << merged_error << "\n";
-  // Measured over these four humans: the kept run alone 9 parts, 0.205; merged 7 parts, 0.139.
-  EXPECT_LT(merged_count, kept_count);
-  EXPECT_LT(merged_error, kept_error - 0.03);
-  // Merging only joins: each merged part is a union of the kept run's parts.
+  std::cout << "bird 246: medoid run " << unmerged_run << ", " << unmerged_count
+            << " parts, 1 - RI " << unmerged_error << "; merged: run " << merged_run << ", "
+            << merged_count << " parts, " << merged_error << "\n";
+  // Measured over these four humans: the plain medoid 9 parts, 0.205; merged 7 parts, 0.139.
+  EXPECT_LT(merged_count, unmerged_count);
+  EXPECT_LT(merged_error, unmerged_error - 0.03);
+  // Merging only joins: each part is a union of the parts of the kept run alone (one run with
+  // its sample order).
+  const std::vector<int> run =
+      segment(1, static_cast<unsigned int>(merged_run), 0.4, run_count, single_run);
+  EXPECT_GT(run_count, merged_count);
   std::map<int, int> merged_of;
   std::size_t split = 0;
-  for (std::size_t i = 0; i < kept.size(); ++i)
-    split += merged_of.emplace(kept[i], merged[i]).first->second != merged[i];
+  for (std::size_t i = 0; i < run.size(); ++i)
+    split += merged_of.emplace(run[i], merged[i]).first->second != merged[i];
   EXPECT_EQ(split, 0u);
 }
 
@@ -510,6 +520,8 @@ TEST(CloudSegmentation, NoisyBearingIsTheConsensusOfFiveRuns)
     seg.setInputCloud(cloud);
     seg.setNumberOfThreads(threads);
     seg.setConsensusRuns(runs);
+    // The medoid alone (NoisyBirdCutsThatMostRunsJoinAreMerged tests the merging).
+    seg.setConsensusMergeThreshold(2.0);
     seg.getMedialMeshEstimation().setSampleOrderSeed(seed);
     std::vector<pcl::PointIndices> parts;
     EXPECT_TRUE(seg.segment(parts));

@@ -391,16 +391,15 @@ segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs
       labelings.push_back(std::move(done[run].working_labels));
       run_of.push_back(run);
     }
-  const int kept = consensusLabeling(labelings);
-  chosen = run_of[kept];
-  estimation = std::move(estimations[chosen]);
-  estimation.setSampleOrderSeed(own_seed);
-  result = std::move(done[chosen]);
-  result.working_labels = labelings[kept];
+  // Each run's parts that the runs join are merged first (mergeByConsensus), so the medoid is
+  // chosen among labelings whose noise cuts are gone: it then weighs where the runs differ in
+  // structure, not in where the foam happened to cut.
+  std::vector<std::vector<int>> merged = labelings;
+  std::vector<std::vector<int>> merged_into(labelings.size());
   if (labelings.size() > 1 && merge_threshold <= 1.0) {
     // The parts' adjacency: the working points' k nearest neighbours (the transfer's graph).
     pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
-    pcl::copyPointCloud(*result.working, *xyz);
+    pcl::copyPointCloud(working, *xyz);
     pcl::KdTreeFLANN<pcl::PointXYZ> tree;
     tree.setInputCloud(xyz);
     std::vector<std::pair<int, int>> edges;
@@ -413,17 +412,24 @@ segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs
         if (j != i)
           edges.emplace_back(i, j);
     }
-    const std::vector<int> into =
-        mergeByConsensus(labelings, edges, merge_threshold, result.working_labels);
-    // A merged label's MAT nodes join those of the label it went into.
-    for (std::size_t l = 0; l < into.size() && l < result.label_parts.size(); ++l) {
-      if (into[l] == static_cast<int>(l))
-        continue;
-      auto& from = result.parts[result.label_parts[l]].indices;
-      auto& to = result.parts[result.label_parts[into[l]]].indices;
-      to.insert(to.end(), from.begin(), from.end());
-      from.clear();
-    }
+    for (std::size_t r = 0; r < merged.size(); ++r)
+      merged_into[r] = mergeByConsensus(labelings, edges, merge_threshold, merged[r]);
+  }
+  const int kept = consensusLabeling(merged);
+  chosen = run_of[kept];
+  estimation = std::move(estimations[chosen]);
+  estimation.setSampleOrderSeed(own_seed);
+  result = std::move(done[chosen]);
+  result.working_labels = std::move(merged[kept]);
+  // A merged label's MAT nodes join those of the label it went into.
+  const std::vector<int>& into = merged_into[kept];
+  for (std::size_t l = 0; l < into.size() && l < result.label_parts.size(); ++l) {
+    if (into[l] == static_cast<int>(l))
+      continue;
+    auto& from = result.parts[result.label_parts[l]].indices;
+    auto& to = result.parts[result.label_parts[into[l]]].indices;
+    to.insert(to.end(), from.begin(), from.end());
+    from.clear();
   }
   return MedialMeshRunStatus::Segmented;
 }

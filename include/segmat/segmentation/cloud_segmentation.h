@@ -137,8 +137,9 @@ enum class MedialMeshRunStatus
 /** \brief The medial-mesh branch of CloudSegmentation::segment(): medial mesh, graph and tags
  * (with the mirror-normal retry when \a retry), growing and transfer — \a runs times with the
  * Voronoi samples thinned in different orders (run r: sample order seed = \a estimation's + r,
- * so run 0 is the plain pipeline), keeping consensusLabeling() of the runs' working labels,
- * whose parts are then merged by mergeByConsensus() above \a merge_threshold (> 1: none).
+ * so run 0 is the plain pipeline). Each run's working labels are merged by mergeByConsensus()
+ * over all the runs (above \a merge_threshold; > 1: no merging), and the consensusLabeling() of
+ * the merged labelings is kept.
  * Each run works on its own copies of \a working and of the three stages; up to \a threads
  * runs go side by side (0: OpenMP's choice; the result does not depend on it). Stage seconds are summed over the
  * runs. Run 0 decides the outcome; a later run that fails is left out. \a estimation ends up
