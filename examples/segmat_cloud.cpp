@@ -41,7 +41,7 @@ const char* const kUsage =
     "  --save-mat         also write PREFIX_base.ma and PREFIX_struct.ma (medial mesh only)\n"
     "  --runs N           segmentations of a noisy cloud to keep the consensus of (default 9;\n"
     "                     1: one run). --runs-always: for every cloud, not only noisy ones\n"
-    "  --runs-merge F     merge the consensus run's adjacent parts that the runs join with a\n"
+    "  --runs-merge F     merge each run's adjacent parts that the runs join with a\n"
     "                     mean co-association above F (default 0.4; above 1: no merging)\n"
     "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"
     "  --json             print one JSON object: parts, point_counts, seconds per stage\n"

@@ -309,13 +309,12 @@ public:
     return consensus_runs_;
   }
 
-  /** \brief Co-association above which two adjacent parts of the consensus run merge (default
-   * 0.4; > 1: no merging). Where noise cut a part, the cut falls elsewhere in each run, so the
-   * other runs join most of what the kept run split there; a real boundary is cut by all
-   * (detail::mergeByConsensus). The kept run's own vote for its cut counts too, so 0.4 of the
-   * nine runs is 0.45 of the other eight. Noisy psb-dev clouds, one draw (README, "Twelfth
-   * pass"): 1 − RI 0.1323 without merging, 0.1317 / 0.1292 / 0.1306 / 0.1291 at 0.5 / 0.4 /
-   * 0.3 / 0.2. */
+  /** \brief Co-association above which two adjacent parts of a consensus run merge, before the
+   * medoid of the runs is chosen (default 0.4; > 1: no merging). Where noise cut a part, the cut
+   * falls elsewhere in each run, so the other runs join most of what one run split there; a
+   * real boundary is cut by all (detail::mergeByConsensus). A run's own vote for its cut counts
+   * too, so 0.4 of nine runs is 0.45 of the other eight. Noisy psb-dev clouds over three noise
+   * draws (README, "Twelfth pass"): 1 − RI 0.133 without merging, 0.128 with. */
   void
   setConsensusMergeThreshold(double threshold);
 
