@@ -27,8 +27,8 @@
  *   (setMinRegionFraction / setSmoothnessWeight; defaults: the library's).
  *   --consensus-runs N segmentations of a noisy cloud to take the consensus of
  *   (CloudSegmentation::setConsensusRuns; 1: a single run as before the consensus).
- *   --consensus-merge F co-association above which the consensus run's adjacent parts merge
- *   (CloudSegmentation::setConsensusMergeThreshold; 2: none).
+ *   --consensus-merge F co-association above which each consensus run's adjacent parts merge
+ *   before the medoid is chosen (CloudSegmentation::setConsensusMergeThreshold; 2: none).
  */
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"

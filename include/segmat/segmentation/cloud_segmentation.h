@@ -108,7 +108,8 @@ consensusLabeling(const std::vector<std::vector<int>>& labelings);
  * most runs join its two sides; a real boundary is cut by all. Ties: the lower pair first.
  * \param[in] labelings the runs' labelings of the same points (labels >= 0; < 0 skipped)
  * \param[in] edges point pairs that are neighbours (the adjacency of parts)
- * \param[in,out] labels the consensus labeling; a merged part takes the lower label
+ * \param[in,out] labels the labeling to merge (one of the runs'); a merged part takes the lower
+ * label
  * \return per label of the input \a labels, the label it ended in */
 std::vector<int>
 mergeByConsensus(const std::vector<std::vector<int>>& labelings,
@@ -318,7 +319,7 @@ public:
   void
   setConsensusMergeThreshold(double threshold);
 
-  /** \brief Co-association above which two adjacent parts of the consensus run merge. */
+  /** \brief Co-association above which two adjacent parts of a consensus run merge. */
   double
   getConsensusMergeThreshold() const
   {

@@ -106,9 +106,9 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
       runs_made_ = noisy || consensus_every_cloud_ ? consensus_runs_ : 1;
       detail::MedialMeshRun run;
       const detail::MedialMeshRunStatus status = detail::segmentWithMedialMesh(
-          *working_, runs_made_, consensus_merge_threshold_, stats.normals_estimated && fragmented_mat_retry_,
-          params.orientation_k, k_, visibility_, params.threads,
-          mesh_estimation_, grower_, transfer_, run, run_kept_, stage_seconds_);
+          *working_, runs_made_, consensus_merge_threshold_,
+          stats.normals_estimated && fragmented_mat_retry_, params.orientation_k, k_, visibility_,
+          params.threads, mesh_estimation_, grower_, transfer_, run, run_kept_, stage_seconds_);
       if (status == detail::MedialMeshRunStatus::Failed) {
         stage_seconds_.clear();
         deinitCompute();
