@@ -14,7 +14,6 @@
 
 #include <pcl/common/io.h>
 #include <pcl/console/print.h>
-#include <pcl/kdtree/kdtree_flann.h>
 
 #include <algorithm>
 #include <chrono>
@@ -397,21 +396,15 @@ segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs
   std::vector<std::vector<int>> merged = labelings;
   std::vector<std::vector<int>> merged_into(labelings.size());
   if (labelings.size() > 1 && merge_threshold <= 1.0) {
-    // The parts' adjacency: the working points' k nearest neighbours (the transfer's graph).
+    // The parts' adjacency: the transfer's graph of the working points (symmetric k-NN; its
+    // weights are not needed).
     pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
     pcl::copyPointCloud(working, *xyz);
-    pcl::KdTreeFLANN<pcl::PointXYZ> tree;
-    tree.setInputCloud(xyz);
+    std::vector<int> nodes(xyz->size());
+    std::iota(nodes.begin(), nodes.end(), 0);
     std::vector<std::pair<int, int>> edges;
-    pcl::Indices found;
-    std::vector<float> distances;
-    const int k = std::min<int>(transfer_k + 1, static_cast<int>(xyz->size()));
-    for (int i = 0; i < static_cast<int>(xyz->size()); ++i) {
-      tree.nearestKSearch((*xyz)[i], k, found, distances);
-      for (const auto j : found)
-        if (j != i)
-          edges.emplace_back(i, j);
-    }
+    for (const PottsEdge& e : computeCloudSmoothnessEdges(xyz, nullptr, nodes, transfer_k, 0.0))
+      edges.emplace_back(e.a, e.b);
     for (std::size_t r = 0; r < merged.size(); ++r)
       merged_into[r] = mergeByConsensus(labelings, edges, merge_threshold, merged[r]);
   }
