@@ -8,10 +8,10 @@
 #include <segmat/geometry/splat_surface.h>
 #include <segmat/geometry/winding_number.h>
 
+#include "../common/point_kd_tree.h"
 #include "../common/splitmix.h"
 
 #include <pcl/console/print.h>
-#include <pcl/kdtree/kdtree_flann.h>
 
 #include <cmath>
 #include <cstdint>
@@ -73,7 +73,7 @@ CloudMedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
 
   // Area per point from the k-th neighbour's squared distance (the point itself comes first).
   const int k = std::min<int>(area_k_, static_cast<int>(points->size()) - 1);
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  detail::PointKdTree tree;
   tree.setInputCloud(xyz);
   std::vector<double> areas(points->size());
   pcl::Indices found;

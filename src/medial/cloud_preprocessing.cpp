@@ -6,12 +6,12 @@
 #include <segmat/medial/normal_orientation.h>
 #include <segmat/medial/voxel_sampling.h>
 
+#include "../common/point_kd_tree.h"
 #include "local_fit.h"
-#include "thread_count.h"
+#include "../common/thread_count.h"
 
 #include <pcl/console/print.h>
 #include <pcl/features/normal_3d_omp.h>
-#include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/search/kdtree.h>
 
 #include <algorithm>
@@ -144,7 +144,7 @@ median(std::vector<float> values)
 /// once, so what visit writes to slot s does not depend on the thread count.
 template <typename Visit>
 void
-forEachNeighbourhood(const pcl::KdTreeFLANN<pcl::PointXYZ>& tree, int k, int stride, int threads,
+forEachNeighbourhood(const detail::PointKdTree& tree, int k, int stride, int threads,
                      Visit visit)
 {
   const auto& cloud = *tree.getInputCloud();
@@ -166,7 +166,7 @@ forEachNeighbourhood(const pcl::KdTreeFLANN<pcl::PointXYZ>& tree, int k, int str
 /// and the median distance to the nearest neighbour.
 std::pair<double, double>
 noiseAndSpacing(const std::vector<Eigen::Vector3f>& positions,
-                const pcl::KdTreeFLANN<pcl::PointXYZ>& tree, int stride, int threads)
+                const detail::PointKdTree& tree, int stride, int threads)
 {
   const int n = static_cast<int>(positions.size());
   const int count = (n + stride - 1) / stride;
@@ -200,7 +200,7 @@ smoothSurface(std::vector<Eigen::Vector3f>& positions, int k, int threads, doubl
   if (n < 6)
     return 0.0;
   const auto cloud = detail::toXYZ(positions);
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  detail::PointKdTree tree;
   tree.setInputCloud(cloud);
   // A quarter of the points tells the noise as well as all of them, at a quarter of the cost
   // that a clean cloud pays for finding out it is clean.
@@ -245,7 +245,7 @@ dropIsolatedPoints(const pcl::PointCloud<pcl::PointNormal>& cloud, std::vector<i
   xyz->resize(n);
   for (int i = 0; i < n; ++i)
     (*xyz)[i].getVector3fMap() = cloud[indices[i]].getVector3fMap();
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  detail::PointKdTree tree;
   tree.setInputCloud(xyz);
   std::vector<float> mean_distance(n, 0.0f);
   forEachNeighbourhood(tree, kNeighbours + 1, 1, threads,
@@ -490,7 +490,7 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
     xyz->resize(cloud.size());
     for (std::size_t w = 0; w < cloud.size(); ++w)
       (*xyz)[w].getVector3fMap() = cloud[w].getVector3fMap();
-    pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+    detail::PointKdTree tree;
     tree.setInputCloud(xyz);
     pcl::Indices nn;
     std::vector<float> d2;

@@ -4,8 +4,9 @@
  */
 #include <segmat/medial/medial_point_graph.h>
 
+#include "../common/point_kd_tree.h"
+
 #include <pcl/console/print.h>
-#include <pcl/kdtree/kdtree_flann.h>
 
 #include <boost/pending/disjoint_sets.hpp>
 
@@ -86,7 +87,7 @@ MedialPointGraph::compute(MatGraph& graph)
   for (int i = 0; i < n; ++i)
     sets.make_set(i);
   if (n > 1) {
-    pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+    detail::PointKdTree tree;
     tree.setInputCloud(xyz);
     pcl::Indices nn;
     std::vector<float> d2;

@@ -8,11 +8,11 @@
 #include <segmat/medial/voxel_sampling.h>
 #include <segmat/medial/impl/meso_skeleton_estimation.hpp>
 
+#include "../common/point_kd_tree.h"
 #include "local_fit.h"
-#include "thread_count.h"
+#include "../common/thread_count.h"
 
 #include <pcl/console/print.h>
-#include <pcl/kdtree/kdtree_flann.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
@@ -55,7 +55,7 @@ radiusInliers(const std::vector<Eigen::Vector3f>& centres, const std::vector<flo
     return all;
   }
   const auto cloud = toXYZ(centres);
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  detail::PointKdTree tree;
   tree.setInputCloud(cloud);
   const int kk = std::min(k, n - 1) + 1;
   std::vector<char> keep(n, 0);
@@ -98,7 +98,7 @@ contractOnce(std::vector<Eigen::Vector3f>& centres, const std::vector<float>& ra
   if (n < 3)
     return;
   const auto cloud = toXYZ(centres);
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  detail::PointKdTree tree;
   tree.setInputCloud(cloud);
   std::vector<Eigen::Vector3f> moved(centres);
 #pragma omp parallel num_threads(threads)
@@ -307,7 +307,7 @@ estimateMesoSkeleton(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, b
   surface_xyz->resize(surface->size());
   for (std::size_t i = 0; i < surface->size(); ++i)
     (*surface_xyz)[i].getVector3fMap() = (*surface)[i].getVector3fMap();
-  pcl::KdTreeFLANN<pcl::PointXYZ> surface_tree;
+  detail::PointKdTree surface_tree;
   surface_tree.setInputCloud(surface_xyz);
   const int merged_count = static_cast<int>(merged.centroids.size());
   std::vector<float> final_radii(merged_count);
@@ -361,7 +361,7 @@ estimateMesoSkeleton(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, b
   for (int i = 0; i < m; ++i)
     points[i] = merged.centroids[final_kept[i]];
   const auto medial_xyz = toXYZ(points);
-  pcl::KdTreeFLANN<pcl::PointXYZ> medial_tree;
+  detail::PointKdTree medial_tree;
   medial_tree.setInputCloud(medial_xyz);
   const int normal_k = std::min(std::max(params.medial_normal_k, 2), m - 1) + 1;
   skeleton.resize(m);

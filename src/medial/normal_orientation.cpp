@@ -4,8 +4,9 @@
  */
 #include <segmat/medial/normal_orientation.h>
 
+#include "../common/point_kd_tree.h"
+
 #include <pcl/console/print.h>
-#include <pcl/kdtree/kdtree_flann.h>
 
 #include <boost/pending/disjoint_sets.hpp>
 
@@ -71,7 +72,7 @@ NormalOrientation::orient(pcl::PointCloud<pcl::PointNormal>& cloud)
     xyz->resize(n);
     for (int i = 0; i < n; ++i)
       (*xyz)[i].getVector3fMap() = cloud[i].getVector3fMap();
-    pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+    detail::PointKdTree tree;
     tree.setInputCloud(xyz);
     const int k = std::min(k_, n - 1) + 1; // +1: the query point itself comes back
     pcl::Indices nn;

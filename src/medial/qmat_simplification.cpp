@@ -173,7 +173,7 @@ enum Candidate : std::uint8_t
   kSecondEnd = 2,
   kMidpoint = 3,
 };
-/// Bits of EdgeCollapser::e_outside_: candidates found outside the surface.
+/// Bits of EdgeCollapser::EdgeState::outside: candidates found outside the surface.
 constexpr std::uint8_t kOptimumOutside = 1, kMidpointOutside = 2;
 
 /** Incremental span of GF(2) vectors (echelon form keyed by leading bit), flat storage. Used to
@@ -258,8 +258,9 @@ struct Settings
   unsigned threads;
 };
 
-/** The dynamic simplicial 2-complex being simplified. Vertex ids: kept input spheres first (in
- * input order), merged spheres appended in merge order — exactly the output order. */
+/** The dynamic simplicial 2-complex being simplified. Vertex ids: the input spheres with an edge,
+ * in breadth-first order; a merged sphere takes the slot of its edge's first end (output_rank_
+ * keeps the output order: survivors in input order, then merges in merge order). */
 class EdgeCollapser
 {
 public:
@@ -314,6 +315,7 @@ private:
   const WindingNumber* inside_; ///< optional surface (input units)
 
   // vertices
+  int num_kept_ = 0;             ///< input spheres with an edge (the slots)
   std::vector<int> output_rank_; ///< position in the output order (input order, then merges)
   std::vector<Eigen::Vector4d> sphere_;
   struct Quadrics
@@ -329,14 +331,22 @@ private:
   // edges
   std::vector<int> e_orig_; ///< input index of each edge
   std::vector<std::array<int, 2>> e_v_;
-  std::vector<char> e_alive_, e_blocked_;
-  std::vector<std::size_t> e_evaluated_; ///< collapse count when the edge's key was computed
+  std::vector<char> e_alive_;
   std::vector<Eigen::Vector4d> e_target_; ///< the sphere chosen then
-  std::vector<std::array<int, 4>> e_blockers_; ///< CollapseChoice::blockers then
-  std::vector<double> e_bound_;                ///< CollapseChoice::bound then
-  std::vector<char> e_verified_; ///< key checked for flips (else it is the bound)
-  std::vector<std::uint8_t> e_candidate_; ///< CollapseChoice::candidate of the key
-  std::vector<std::uint8_t> e_outside_;   ///< kOptimumOutside | kMidpointOutside
+  /** What the queue knows of an edge, in one place: a collapse checks it on every edge two
+   * rings around the merged sphere, and one record per edge is one cache miss there, where
+   * separate arrays were three (they took a quarter of the collapse's time). */
+  struct EdgeState
+  {
+    double bound = 0.0;                             ///< CollapseChoice::bound of the key
+    std::array<int, 4> blockers = {-1, -1, -1, -1}; ///< CollapseChoice::blockers of the key
+    std::uint32_t evaluated = 0; ///< collapse count when the key was computed
+    char blocked = 0;            ///< failed the topology test; retried when its link changes
+    char verified = 0;           ///< key checked for flips (else it is the bound)
+    std::uint8_t candidate = kOptimum; ///< CollapseChoice::candidate of the key
+    std::uint8_t outside = 0;          ///< kOptimumOutside | kMidpointOutside
+  };
+  std::vector<EdgeState> e_state_;
   std::vector<std::size_t> v_touched_;   ///< collapse count when a triangle around it changed
   // faces
   std::vector<int> f_orig_; ///< input index of each triangle
@@ -402,14 +412,17 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
   for (int i = 0; i < n; ++i)
     to_internal[kept[order[i]]] = i;
 
-  const std::size_t capacity = n > 0 ? 2 * static_cast<std::size_t>(n) - 1 : 0;
-  sphere_.reserve(capacity);
-  q_.reserve(capacity);
-  v_alive_.reserve(capacity);
-  v_edges_.reserve(capacity);
-  v_faces_.reserve(capacity);
-  mark_.assign(capacity, 0);
-  output_rank_.resize(capacity);
+  // A merged sphere reuses a slot, so n slots hold every sphere there will be, and a merge stays
+  // near its neighbours in memory: appending merges at the end scattered the late collapses'
+  // neighbourhoods, whose evaluations then waited on cache misses.
+  num_kept_ = n;
+  sphere_.reserve(n);
+  q_.reserve(n);
+  v_alive_.reserve(n);
+  v_edges_.reserve(n);
+  v_faces_.reserve(n);
+  mark_.assign(n, 0);
+  output_rank_.resize(n);
   for (int i = 0; i < n; ++i) {
     const int v = kept[order[i]];
     Eigen::Vector4d s;
@@ -419,8 +432,6 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
     v_alive_.push_back(1);
     output_rank_[i] = order[i];
   }
-  for (std::size_t v = n; v < capacity; ++v)
-    output_rank_[v] = static_cast<int>(v); // merged spheres follow the survivors in merge order
   q_.resize(n);
   v_edges_.resize(n);
   v_faces_.resize(n);
@@ -463,15 +474,9 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
     v_edges_[b].push_back(id);
   }
   e_alive_.assign(e_v_.size(), 1);
-  e_blocked_.assign(e_v_.size(), 0);
-  e_evaluated_.assign(e_v_.size(), 0);
+  e_state_.assign(e_v_.size(), EdgeState());
   e_target_.resize(e_v_.size());
-  e_blockers_.resize(e_v_.size());
-  e_bound_.resize(e_v_.size());
-  e_verified_.assign(e_v_.size(), 0);
-  e_candidate_.assign(e_v_.size(), kOptimum);
-  e_outside_.assign(e_v_.size(), 0);
-  v_touched_.assign(capacity, 0);
+  v_touched_.assign(n, 0);
 
   f_orig_ = sortedBySmallestCorner(mat.numTriangles(), [&](std::size_t f) {
     const Eigen::Vector3i& t = mat.triangles()[f];
@@ -506,8 +511,8 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
     const CollapseChoice c = evaluate(e, false);
     first_key[e] = keyOf(e, c);
     e_target_[e] = c.sphere;
-    e_blockers_[e] = c.blockers;
-    e_bound_[e] = c.bound;
+    e_state_[e].blockers = c.blockers;
+    e_state_[e].bound = c.bound;
   }
   heap_ = EdgeHeap(e_v_.size());
   for (int e = 0; e < num_edges; ++e)
@@ -688,7 +693,7 @@ EdgeCollapser::evaluate(int e, bool check_flips) const
   const Eigen::Vector4d* fallback[3] = {&sa, &sb, &mid};
   const std::uint8_t fallback_id[3] = {kFirstEnd, kSecondEnd, kMidpoint};
   // A midpoint found outside the surface is no candidate (the ends are inside by induction).
-  const int num_fallbacks = (e_outside_[e] & kMidpointOutside) ? 2 : 3;
+  const int num_fallbacks = (e_state_[e].outside & kMidpointOutside) ? 2 : 3;
   double fallback_cost[3] = {-1.0, -1.0, -1.0}; // filled when needed
   auto fillFallbackCosts = [&] {
     if (fallback_cost[0] < 0.0)
@@ -713,7 +718,7 @@ EdgeCollapser::evaluate(int e, bool check_flips) const
   if (!has_faces || (q_[a].face + q_[b].face).invertible()) {
     // §8.4 case 1: the optimal sphere m* = A⁻¹b; the midpoint when singular or r < 0 (or, with
     // a surface, outside it).
-    if ((e_outside_[e] & kOptimumOutside) || !q.minimiser(choice.sphere) ||
+    if ((e_state_[e].outside & kOptimumOutside) || !q.minimiser(choice.sphere) ||
         !(choice.sphere[3] >= 0.0)) {
       if (num_fallbacks == 3) {
         choice.sphere = mid;
@@ -845,14 +850,12 @@ void
 EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
 {
   const int a = e_v_[e][0], b = e_v_[e][1];
-  const int m = static_cast<int>(sphere_.size());
-  sphere_.push_back(target);
-  q_.push_back({q_[a].face + q_[b].face, q_[a].all + q_[b].all});
-  v_alive_.push_back(1);
-  v_edges_.push_back(recycledList());
-  v_faces_.push_back(recycledList());
-  std::vector<int>& m_faces = v_faces_[m];
-  std::vector<int>& m_edges = v_edges_[m];
+  const int m = a; // the merged sphere's slot (see the class comment)
+  sphere_[m] = target; // the re-pointed triangles' normals below need it
+  const Quadrics merged_q{q_[a].face + q_[b].face, q_[a].all + q_[b].all};
+  // m's lists are built beside a's (which the loops below still read), then take their place.
+  std::vector<int> m_faces = recycledList();
+  std::vector<int> m_edges = recycledList();
   m_faces.reserve(v_faces_[a].size() + v_faces_[b].size());
   m_edges.reserve(v_edges_[a].size() + v_edges_[b].size());
 
@@ -913,14 +916,19 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
       }
       mark_[x] = stamp_;
       e_v_[e2] = {x, m};
-      e_blocked_[e2] = 0;
-      e_outside_[e2] = 0;
+      e_state_[e2].blocked = 0;
+      e_state_[e2].outside = 0;
       m_edges.push_back(e2);
     }
 
-  v_alive_[a] = v_alive_[b] = 0;
+  v_alive_[b] = 0;
   for (std::vector<int>* list : {&v_edges_[a], &v_edges_[b], &v_faces_[a], &v_faces_[b]})
     recycleList(*list);
+  v_faces_[m] = std::move(m_faces);
+  v_edges_[m] = std::move(m_edges);
+  q_[m] = merged_q;
+  // Merges follow the survivors in the output, in merge order.
+  output_rank_[m] = num_kept_ + static_cast<int>(collapses_);
   --alive_count_;
   ++collapses_;
 
@@ -940,19 +948,19 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
   for (int e2 : v_edges_[m]) {
     const int x = other(e2, m);
     for (int e3 : v_edges_[x]) {
-      if (e_evaluated_[e3] == collapses_)
+      if (e_state_[e3].evaluated == static_cast<std::uint32_t>(collapses_))
         continue; // just evaluated
-      if (e_blocked_[e3]) {
-        e_blocked_[e3] = 0;
+      if (e_state_[e3].blocked) {
+        e_state_[e3].blocked = 0;
         pushBound(e3);
         continue;
       }
-      const auto& bl = e_blockers_[e3];
+      const auto& bl = e_state_[e3].blockers;
       if (changed(bl[0]) || changed(bl[1]) || changed(bl[2]) || changed(bl[3])) {
         const int ra = output_rank_[e_v_[e3][0]], rb = output_rank_[e_v_[e3][1]];
-        heap_.set(e3, {e_bound_[e3], std::min(ra, rb), std::max(ra, rb), 0});
-        e_blockers_[e3] = {-1, -1, -1, -1};
-        e_verified_[e3] = 0;
+        heap_.set(e3, {e_state_[e3].bound, std::min(ra, rb), std::max(ra, rb), 0});
+        e_state_[e3].blockers = {-1, -1, -1, -1};
+        e_state_[e3].verified = 0;
       }
     }
   }
@@ -964,11 +972,11 @@ EdgeCollapser::push(int e)
   const CollapseChoice c = evaluate(e);
   heap_.set(e, keyOf(e, c));
   e_target_[e] = c.sphere;
-  e_candidate_[e] = c.candidate;
-  e_blockers_[e] = c.blockers;
-  e_bound_[e] = c.bound;
-  e_verified_[e] = 1;
-  e_evaluated_[e] = collapses_;
+  e_state_[e].candidate = c.candidate;
+  e_state_[e].blockers = c.blockers;
+  e_state_[e].bound = c.bound;
+  e_state_[e].verified = 1;
+  e_state_[e].evaluated = static_cast<std::uint32_t>(collapses_);
 }
 
 void
@@ -978,10 +986,10 @@ EdgeCollapser::pushBound(int e)
   // bound (the cost were nothing to flip) and run them only when it does.
   const CollapseChoice c = evaluate(e, false);
   heap_.set(e, keyOf(e, c));
-  e_bound_[e] = c.bound;
-  e_blockers_[e] = {-1, -1, -1, -1};
-  e_verified_[e] = 0;
-  e_evaluated_[e] = collapses_;
+  e_state_[e].bound = c.bound;
+  e_state_[e].blockers = {-1, -1, -1, -1};
+  e_state_[e].verified = 0;
+  e_state_[e].evaluated = static_cast<std::uint32_t>(collapses_);
 }
 
 std::size_t
@@ -996,7 +1004,8 @@ EdgeCollapser::run(std::size_t target)
     const int e = heap_.topEdge();
     const int a = e_v_[e][0], b = e_v_[e][1];
     // A bound is checked for flips now; keys near a collapse go stale: re-validate those.
-    if (!e_verified_[e] || std::max(v_touched_[a], v_touched_[b]) > e_evaluated_[e]) {
+    const EdgeState& state = e_state_[e];
+    if (!state.verified || std::max(v_touched_[a], v_touched_[b]) > state.evaluated) {
       const QueueKey old = heap_.topKey();
       push(e);
       if (old < heap_.topKey() || heap_.topKey() < old || heap_.topEdge() != e)
@@ -1004,17 +1013,17 @@ EdgeCollapser::run(std::size_t target)
     }
     // With a surface: a new centre (m* or the midpoint) must stay inside it; if not, that
     // candidate is dropped for this edge and the key recomputed.
-    const std::uint8_t candidate = e_candidate_[e];
+    const std::uint8_t candidate = e_state_[e].candidate;
     if (inside_ && (candidate == kOptimum || candidate == kMidpoint) &&
         !insideSurface(a, e_target_[e])) {
-      e_outside_[e] |= candidate == kOptimum ? kOptimumOutside : kMidpointOutside;
+      e_state_[e].outside |= candidate == kOptimum ? kOptimumOutside : kMidpointOutside;
       push(e);
       continue;
     }
     // Topology last: it is the dearest test, and only a collapse about to happen needs it.
     if (!linkCondition(e) && !killedCyclesAreBoundaries(e, kPopPatchRings)) {
       heap_.erase(e);
-      e_blocked_[e] = 1; // retried when its neighbourhood changes
+      e_state_[e].blocked = 1; // retried when its neighbourhood changes
       continue;
     }
     penalised_ += heap_.topKey().tier;
@@ -1044,7 +1053,7 @@ EdgeCollapser::unblockByHomology()
       // Same surface rule as in run(): at most two rounds, the ends are inside.
       while (inside_ && (c.candidate == kOptimum || c.candidate == kMidpoint) &&
              !insideSurface(e_v_[e][0], c.sphere)) {
-        e_outside_[e] |= c.candidate == kOptimum ? kOptimumOutside : kMidpointOutside;
+        e_state_[e].outside |= c.candidate == kOptimum ? kOptimumOutside : kMidpointOutside;
         c = evaluate(e);
       }
       blocked.push_back({keyOf(e, c), e, c});
@@ -1179,7 +1188,7 @@ EdgeCollapser::extract() const
 {
   // Survivors in input order, then merged spheres in merge order; edges and triangles in input
   // order (all of them are input elements, re-pointed).
-  std::vector<int> by_rank(sphere_.size(), -1);
+  std::vector<int> by_rank(num_kept_ + collapses_, -1);
   for (std::size_t v = 0; v < sphere_.size(); ++v)
     if (v_alive_[v])
       by_rank[output_rank_[v]] = static_cast<int>(v);

@@ -5,11 +5,11 @@
 #include <segmat/common/checked_setter.h>
 #include <segmat/medial/shrinking_ball_estimation.h>
 
+#include "../common/point_kd_tree.h"
 #include "local_fit.h"
-#include "thread_count.h"
+#include "../common/thread_count.h"
 
 #include <pcl/console/print.h>
-#include <pcl/kdtree/kdtree_flann.h>
 
 #include <algorithm>
 #include <cmath>
@@ -103,7 +103,7 @@ ShrinkingBallEstimation::compute(pcl::PointCloud<MedialPoint>& balls)
                             ? double(initial_radius_)
                             : std::max(0.55 * double((hi - lo).minCoeff()), 1e-3 * diagonal);
   const double tolerance = 1e-5 * diagonal;
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  detail::PointKdTree tree;
   tree.setInputCloud(xyz);
 
   const double preserve = preserve_angle_, planar = planar_angle_;

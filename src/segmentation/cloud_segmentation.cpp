@@ -10,7 +10,7 @@
 #include <segmat/segmentation/impl/cloud_segmentation.hpp>
 #include <segmat/segmentation/structure_tags.h>
 
-#include "../medial/thread_count.h"
+#include "../common/thread_count.h"
 
 #include <pcl/common/io.h>
 #include <pcl/console/print.h>
@@ -403,7 +403,8 @@ segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs
     std::vector<int> nodes(xyz->size());
     std::iota(nodes.begin(), nodes.end(), 0);
     std::vector<std::pair<int, int>> edges;
-    for (const PottsEdge& e : computeCloudSmoothnessEdges(xyz, nullptr, nodes, transfer_k, 0.0))
+    for (const PottsEdge& e : computeCloudSmoothnessEdges(xyz, nullptr, nodes, transfer_k, 0.0,
+                                                           CreaseModel::Reference, threads))
       edges.emplace_back(e.a, e.b);
     for (std::size_t r = 0; r < merged.size(); ++r)
       merged_into[r] = mergeByConsensus(labelings, edges, merge_threshold, merged[r]);

@@ -6,9 +6,11 @@
 #include <segmat/geometry/sphere_tree.h>
 #include <segmat/segmentation/label_transfer.h>
 
+#include "../common/point_kd_tree.h"
+#include "../common/thread_count.h"
+
 #include <pcl/console/print.h>
 #include <pcl/common/point_tests.h>
-#include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/pcl_base.h>
 
 #include <algorithm>
@@ -27,7 +29,7 @@ constexpr double kRadiansToDegrees = 57.295779513082320876798154814105;
 
 Eigen::MatrixXd
 computePartDistanceCosts(const std::vector<Eigen::Vector3d>& positions, const MatGraph& graph,
-                         const std::vector<std::vector<int>>& parts)
+                         const std::vector<std::vector<int>>& parts, unsigned int threads)
 {
   const long n = static_cast<long>(positions.size());
   const int num_parts = static_cast<int>(parts.size());
@@ -51,7 +53,8 @@ computePartDistanceCosts(const std::vector<Eigen::Vector3d>& positions, const Ma
   // machines). Consecutive elements are usually close, so each part's previous answer is a good
   // first bound; the result does not depend on it (the minimum is exact), hence not on threads.
   std::vector<int> hints(num_parts, -1);
-#pragma omp parallel for schedule(static) firstprivate(hints)
+  [[maybe_unused]] const int num_threads = detail::threadCount(threads);
+#pragma omp parallel for schedule(static) firstprivate(hints) num_threads(num_threads)
   for (long i = 0; i < n; ++i) {
     const bool finite = positions[i].allFinite();
     for (int l = 0; l < num_parts; ++l) {
@@ -112,7 +115,7 @@ std::vector<PottsEdge>
 computeCloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
                             const pcl::PointCloud<pcl::Normal>::ConstPtr& normals,
                             const std::vector<int>& nodes, int k, double omega,
-                            CreaseModel model)
+                            CreaseModel model, unsigned int threads)
 {
   std::vector<PottsEdge> edges;
   if (!cloud || nodes.size() < 2 || k < 1)
@@ -121,11 +124,11 @@ computeCloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& clou
   std::vector<int> node_of(cloud->size(), -1);
   for (int a = 0; a < num_nodes; ++a)
     node_of[nodes[a]] = a;
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  detail::PointKdTree tree;
   tree.setInputCloud(cloud, pcl::IndicesConstPtr(new pcl::Indices(nodes.begin(), nodes.end())));
   const int num_found = std::min(k + 1, num_nodes); // the point itself comes back too
   std::vector<int> found_nodes(static_cast<std::size_t>(num_nodes) * num_found, -1);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(detail::threadCount(threads))
   for (int a = 0; a < num_nodes; ++a) {
     pcl::Indices found;
     std::vector<float> sq;
@@ -224,7 +227,7 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
     label_parts_.assign(positions.empty() ? 0 : 1, 0);
     return true;
   }
-  solver_.setUnaryCosts(computePartDistanceCosts(positions, *graph_, parts_));
+  solver_.setUnaryCosts(computePartDistanceCosts(positions, *graph_, parts_, threads_));
   if (!solver_.compute(labels)) {
     labels.clear();
     return false;
@@ -278,12 +281,13 @@ voxelKey(const pcl::PointXYZ& p, const Eigen::Vector3d& lo, double h)
  * sqrt(count / target) (a surface's voxel count goes as 1/h²), counting on a 4·target-point
  * subsample. node_of_point[i] becomes the voxel number of point i (-1 for points not in
  * \a finite); reps lists the representatives in voxel-key order (spatially coherent, which the
- * data term's search likes).
+ * data term's search likes). \a threads: of the spacing search (the result does not depend on it).
  */
 void
 sampleVoxelRepresentatives(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
                            const std::vector<int>& finite, std::size_t target,
-                           std::vector<int>& reps, std::vector<int>& node_of_point)
+                           std::vector<int>& reps, std::vector<int>& node_of_point,
+                           unsigned int threads)
 {
   const pcl::PointCloud<pcl::PointXYZ>& c = *cloud;
   const auto strided = [&](std::size_t count) {
@@ -294,10 +298,10 @@ sampleVoxelRepresentatives(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud
     return sample;
   };
   const auto sample = strided(target);
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  detail::PointKdTree tree;
   tree.setInputCloud(cloud, sample);
   std::vector<float> spacing(sample->size(), 0.0f);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(detail::threadCount(threads))
   for (long k = 0; k < static_cast<long>(sample->size()); ++k) {
     pcl::Indices found;
     std::vector<float> sq;
@@ -375,7 +379,8 @@ CloudLabelTransfer::transfer(std::vector<int>& point_labels)
         finite.push_back(static_cast<int>(i));
     node_of_point_.assign(cloud.size(), -1);
     if (max_graph_points_ > 0 && finite.size() > max_graph_points_)
-      sampleVoxelRepresentatives(cloud_, finite, max_graph_points_, nodes_, node_of_point_);
+      sampleVoxelRepresentatives(cloud_, finite, max_graph_points_, nodes_, node_of_point_,
+                                 threads_);
     else {
       nodes_ = finite;
       for (std::size_t k = 0; k < finite.size(); ++k)
@@ -390,7 +395,8 @@ CloudLabelTransfer::transfer(std::vector<int>& point_labels)
   // The neighbour graph is only needed when there is something to cut (and then kept).
   if (parts_.size() > 1 && edgesStale()) {
     solver_.setEdges(
-        computeCloudSmoothnessEdges(cloud_, normals_, nodes_, k_, omega_, crease_model_));
+        computeCloudSmoothnessEdges(cloud_, normals_, nodes_, k_, omega_, crease_model_,
+                                    threads_));
     markEdgesBuilt();
   }
   std::vector<Eigen::Vector3d> positions(nodes_.size());

@@ -7,8 +7,9 @@
 #include <segmat/segmentation/mat_region_growing.h>
 #include <segmat/segmentation/patch_merging.h>
 
+#include "../common/point_kd_tree.h"
+
 #include <pcl/console/print.h>
-#include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
@@ -63,7 +64,7 @@ public:
 
 private:
   const std::vector<Eigen::Vector3d>& centers_;
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree_;
+  detail::PointKdTree tree_;
   double margin_ = 0.0;
   std::vector<int> indices_;
   std::vector<float> sq_dist_;

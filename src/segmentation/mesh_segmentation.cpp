@@ -106,6 +106,7 @@ void
 MeshSegmentation::setNumberOfThreads(unsigned threads)
 {
   estimation_->setNumberOfThreads(threads); // the output does not depend on it: keep the MATs
+  transfer_.setNumberOfThreads(threads);
 }
 
 unsigned

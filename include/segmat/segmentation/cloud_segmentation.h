@@ -378,6 +378,7 @@ public:
   {
     skeleton_estimation_.setNumberOfThreads(threads);
     mesh_estimation_.getMedialMeshEstimation().setNumberOfThreads(threads);
+    transfer_.setNumberOfThreads(threads);
   }
 
   /** \brief The medial axis to build (default CloudMedialAxis::MedialMesh). */

@@ -33,11 +33,12 @@ constexpr double kTransferEnergyScale = 1e5;
  * \param[in] positions query points (face centroids, cloud points)
  * \param[in] graph the MAT graph whose node indices \a parts holds (must be valid indices)
  * \param[in] parts per part, its MAT-graph nodes
+ * \param[in] threads threads (0: OpenMP's choice; the costs do not depend on it)
  * \return positions.size() × parts.size() costs
  */
 Eigen::MatrixXd
 computePartDistanceCosts(const std::vector<Eigen::Vector3d>& positions, const MatGraph& graph,
-                         const std::vector<std::vector<int>>& parts);
+                         const std::vector<std::vector<int>>& parts, unsigned int threads = 0);
 
 /** \brief How computeCreaseCost() prices a cut across a concave crease.
  *
@@ -107,18 +108,21 @@ computeMeshSmoothnessEdges(const TriangleMesh& mesh, double omega,
  * calibrated on teddy: area-uniform samples of 20k–1M points labelled this way agree with the
  * mesh transfer's face labels on 96–97.6 % of the points, and keep all 8 parts (3/k lost the
  * ears at 20k voxel representatives).
- * \param[in] cloud the points (PCL's KdTreeFLANN searches them)
+ * \param[in] cloud the points (searched with pcl::KdTreeFLANN's answers)
  * \param[in] normals outward unit normals, one per cloud point, or null
  * \param[in] nodes the cloud indices that are graph nodes (finite points); node a is nodes[a]
  * \param[in] k neighbours per point
  * \param[in] omega ω
+ * \param[in] model how concave pairs are priced
+ * \param[in] threads threads of the neighbour search (0: OpenMP's choice; the edges do not
+ * depend on it)
  * \return edges between node numbers (positions in \a nodes), each pair once, sorted
  */
 std::vector<PottsEdge>
 computeCloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
                             const pcl::PointCloud<pcl::Normal>::ConstPtr& normals,
                             const std::vector<int>& nodes, int k, double omega,
-                            CreaseModel model = CreaseModel::Reference);
+                            CreaseModel model = CreaseModel::Reference, unsigned int threads = 0);
 
 /** \brief Renumber labels densely (0..k−1) keeping their order; negative labels stay as they
  * are (unassigned). Absent labels disappear (reference post-processing, §3.10).
@@ -162,6 +166,21 @@ public:
   getParts() const
   {
     return parts_;
+  }
+
+  /** \brief Threads of the data term and of the cloud's neighbour search (0, the default:
+   * OpenMP's choice). The labels do not depend on it. */
+  void
+  setNumberOfThreads(unsigned int threads)
+  {
+    threads_ = threads;
+  }
+
+  /** \brief The thread count (0: OpenMP's choice). */
+  unsigned int
+  getNumberOfThreads() const
+  {
+    return threads_;
   }
 
   /** \brief ω, weight of the smoothness term (SEG-MAT default 0.3). Negative or non-finite
@@ -263,6 +282,7 @@ protected:
   std::vector<std::vector<int>> parts_;
   double omega_ = 0.3;
   CreaseModel crease_model_ = CreaseModel::SharpConcave;
+  unsigned int threads_ = 0;
   bool edges_valid_ = false; ///< the solver holds smoothness edges of the current input
   double edges_omega_ = 0.0;
   CreaseModel edges_crease_ = CreaseModel::SharpConcave;

@@ -127,8 +127,8 @@ public:
   int
   getStructuredMatTarget() const;
 
-  /** \brief Threads of the medial-mesh computation (MedialMeshEstimation::setNumberOfThreads;
-   * 0 = OpenMP's default). The output does not depend on it.
+  /** \brief Threads of the medial-mesh computation (MedialMeshEstimation::setNumberOfThreads)
+   * and of the transfer's data term (0 = OpenMP's default). The output does not depend on it.
    */
   void
   setNumberOfThreads(unsigned threads);
