@@ -293,6 +293,9 @@ TEST(LabelTransferTerms, PartDistanceCostsMatchBruteForce)
       EXPECT_EQ(costs(i, l), std::floor(std::max(0.0, best) / diagonal * 1e5)) << i << " " << l;
     }
   EXPECT_EQ(costs(0, 3), 1e9); // a part without spheres never wins
+  // The same costs on any number of threads.
+  EXPECT_EQ(computePartDistanceCosts(queries, graph, parts, 1), costs);
+  EXPECT_EQ(computePartDistanceCosts(queries, graph, parts, 3), costs);
   // A non-finite position has no preference.
   const Eigen::MatrixXd nan_costs = computePartDistanceCosts(
       {Eigen::Vector3d(std::nan(""), 0, 0), queries[0]}, graph, parts);
@@ -452,6 +455,20 @@ TEST(CloudLabelTransfer, BarSamplesSplitAtTheMiddle)
   transfer.setInputNormals(normals);
   ASSERT_TRUE(transfer.transfer(labels));
   EXPECT_EQ(labels, expected);
+  // The thread count reaches the data term and the neighbour search, not the answer.
+  EXPECT_EQ(transfer.getNumberOfThreads(), 0u);
+  for (unsigned threads : {1u, 2u}) {
+    CloudLabelTransfer threaded;
+    threaded.setNumberOfThreads(threads);
+    EXPECT_EQ(threaded.getNumberOfThreads(), threads);
+    threaded.setInputCloud(cloud);
+    threaded.setInputNormals(normals);
+    threaded.setInputGraph(s.graph);
+    threaded.setParts(s.parts);
+    std::vector<int> threaded_labels;
+    ASSERT_TRUE(threaded.transfer(threaded_labels));
+    EXPECT_EQ(threaded_labels, expected) << threads << " threads";
+  }
 
   // Cut on ~300 voxel representatives instead of all 2078 points: away from the middle (more
   // than a voxel or two) every point keeps its side; each point takes its voxel's label.
