@@ -345,6 +345,7 @@ private:
   std::vector<char> v_alive_;
   std::vector<std::vector<int>> v_edges_, v_faces_;
   std::vector<std::uint32_t> mark_;
+  std::vector<int> edge_to_; ///< scratch of collapse(): m's edge to a marked neighbour
   std::uint32_t stamp_ = 0;
   // edges
   std::vector<int> e_orig_; ///< input index of each edge
@@ -356,11 +357,13 @@ private:
    * separate arrays were three (they took a quarter of the collapse's time). */
   struct EdgeState
   {
+    EdgeState() : blocked(0), verified(0), has_faces(0) {}
     double bound = 0.0;                             ///< CollapseChoice::bound of the key
     std::array<int, 4> blockers = {-1, -1, -1, -1}; ///< CollapseChoice::blockers of the key
     std::uint32_t evaluated = 0; ///< collapse count when the key was computed
-    char blocked = 0;            ///< failed the topology test; retried when its link changes
-    char verified = 0;           ///< key checked for flips (else it is the bound)
+    std::uint8_t blocked : 1;   ///< failed the topology test; retried when its link changes
+    std::uint8_t verified : 1;  ///< key checked for flips (else it is the bound)
+    std::uint8_t has_faces : 1; ///< a triangle stands on the edge (kept by collapse())
     std::uint8_t candidate = kOptimum; ///< CollapseChoice::candidate of the key
     std::uint8_t outside = 0;          ///< kOptimumOutside | kMidpointOutside
   };
@@ -440,6 +443,7 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
   v_edges_.reserve(n);
   v_faces_.reserve(n);
   mark_.assign(n, 0);
+  edge_to_.assign(n, -1);
   output_rank_.resize(n);
   for (int i = 0; i < n; ++i) {
     const int v = kept[order[i]];
@@ -509,6 +513,13 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
       v_faces_[to_internal[t[k]]].push_back(id);
   }
   f_alive_.assign(f_v_.size(), 1);
+  for (const auto& t : f_v_)
+    for (int k = 0; k < 3; ++k) {
+      const int p = t[k], q = t[(k + 1) % 3];
+      for (int e : v_edges_[p])
+        if (other(e, p) == q)
+          e_state_[e].has_faces = 1;
+    }
   f_normal_.resize(f_v_.size());
   for (std::size_t f = 0; f < f_v_.size(); ++f)
     f_normal_[f] = faceNormal(static_cast<int>(f));
@@ -668,11 +679,9 @@ EdgeCollapser::evaluate(int e, bool check_flips) const
   };
   bool has_faces = false; // a triangle on ab (it disappears with the collapse)
   if (!check_flips || !settings_.prevent_inversion) {
-    for (int f : v_faces_[a])
-      if (hasVertex(f, b)) {
-        has_faces = true;
-        break;
-      }
+    // Kept per edge: scanning a's triangles here was a cache miss per triangle, on the most
+    // frequent call (every edge of a merged sphere, after every collapse).
+    has_faces = e_state_[e].has_faces;
   }
   else {
     for (int v : {a, b})
@@ -943,6 +952,20 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
   v_faces_[m] = std::move(m_faces);
   v_edges_[m] = std::move(m_edges);
   q_[m] = merged_q;
+  // Only m's edges can gain or lose a triangle (a killed duplicate bxy leaves mxy on xy).
+  ++stamp_;
+  for (int e2 : v_edges_[m]) {
+    const int x = other(e2, m);
+    mark_[x] = stamp_;
+    edge_to_[x] = e2;
+    e_state_[e2].has_faces = 0;
+  }
+  for (int f : v_faces_[m]) {
+    const auto& t = f_v_[f];
+    for (int x : t)
+      if (x != m && mark_[x] == stamp_)
+        e_state_[edge_to_[x]].has_faces = 1;
+  }
   // Merges follow the survivors in the output, in merge order.
   output_rank_[m] = num_kept_ + static_cast<int>(collapses_);
   --alive_count_;
