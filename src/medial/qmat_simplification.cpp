@@ -513,13 +513,8 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
       v_faces_[to_internal[t[k]]].push_back(id);
   }
   f_alive_.assign(f_v_.size(), 1);
-  for (const auto& t : f_v_)
-    for (int k = 0; k < 3; ++k) {
-      const int p = t[k], q = t[(k + 1) % 3];
-      for (int e : v_edges_[p])
-        if (other(e, p) == q)
-          e_state_[e].has_faces = 1;
-    }
+  for (std::size_t e = 0; e < e_v_.size(); ++e)
+    e_state_[e].has_faces = !mat.isPureEdge(e_orig_[e]);
   f_normal_.resize(f_v_.size());
   for (std::size_t f = 0; f < f_v_.size(); ++f)
     f_normal_[f] = faceNormal(static_cast<int>(f));

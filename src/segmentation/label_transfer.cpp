@@ -136,17 +136,32 @@ computeCloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& clou
     for (std::size_t j = 0; j < found.size() && j < static_cast<std::size_t>(num_found); ++j)
       found_nodes[static_cast<std::size_t>(a) * num_found + j] = node_of[found[j]];
   }
-  // Symmetric graph: an edge when either point lists the other.
-  std::vector<std::pair<int, int>> pairs;
-  pairs.reserve(found_nodes.size());
+  // Symmetric graph: an edge when either point lists the other. Sorted and unique, by a
+  // counting sort on the lower end and small sorts of each one's higher ends (a sort of all
+  // k·n pairs was ~1 % of a cloud's segmentation).
+  std::vector<int> start(static_cast<std::size_t>(num_nodes) + 1, 0);
+  auto forEachPair = [&](auto visit) {
+    for (int a = 0; a < num_nodes; ++a)
+      for (int j = 0; j < num_found; ++j) {
+        const int b = found_nodes[static_cast<std::size_t>(a) * num_found + j];
+        if (b >= 0 && b != a)
+          visit(std::min(a, b), std::max(a, b));
+      }
+  };
+  forEachPair([&](int lo, int) { ++start[lo + 1]; });
   for (int a = 0; a < num_nodes; ++a)
-    for (int j = 0; j < num_found; ++j) {
-      const int b = found_nodes[static_cast<std::size_t>(a) * num_found + j];
-      if (b >= 0 && b != a)
-        pairs.emplace_back(std::min(a, b), std::max(a, b));
-    }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    start[a + 1] += start[a];
+  std::vector<int> higher(start.back()), next(start.begin(), start.end() - 1);
+  forEachPair([&](int lo, int hi) { higher[next[lo]++] = hi; });
+  std::vector<std::pair<int, int>> pairs;
+  pairs.reserve(higher.size());
+  for (int a = 0; a < num_nodes; ++a) {
+    const auto begin = higher.begin() + start[a], end = higher.begin() + start[a + 1];
+    std::sort(begin, end);
+    for (auto it = begin; it != end; ++it)
+      if (it == begin || *it != *(it - 1))
+        pairs.emplace_back(a, *it);
+  }
 
   // Per-edge scale so that cutting a cloud costs about what cutting the mesh does (see header).
   const double degree_scale = 2.0 / k;
