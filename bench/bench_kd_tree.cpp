@@ -90,8 +90,7 @@ main(int argc, char** argv)
   try {
     const segmat::TriangleMesh mesh = segmat::io::loadOff(mesh_path);
     const segmat::test::SampledCloud sample = segmat::test::sampleMesh(mesh, points, 1);
-    const auto full = sample.toCloud<pcl::PointXYZ>();
-    pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>(*full));
+    const auto cloud = sample.toCloud<pcl::PointXYZ>();
     std::vector<double> pcl_build, pcl_query, own_build, own_query;
     bool same = true;
     for (int r = 0; r < repeat; ++r) {

@@ -7,8 +7,8 @@
 #include <segmat/medial/voxel_sampling.h>
 
 #include "../common/point_kd_tree.h"
-#include "local_fit.h"
 #include "../common/thread_count.h"
+#include "local_fit.h"
 
 #include <pcl/console/print.h>
 #include <pcl/features/normal_3d_omp.h>

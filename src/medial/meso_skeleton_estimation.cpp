@@ -9,8 +9,8 @@
 #include <segmat/medial/impl/meso_skeleton_estimation.hpp>
 
 #include "../common/point_kd_tree.h"
-#include "local_fit.h"
 #include "../common/thread_count.h"
+#include "local_fit.h"
 
 #include <pcl/console/print.h>
 

@@ -57,8 +57,6 @@ struct QueueKey
 class EdgeHeap
 {
 public:
-  explicit EdgeHeap(std::size_t num_edges = 0) : pos_(num_edges, -1) {}
-
   /** Builds the heap of edges 0..keys.size()−1 at once (Floyd: O(n), where inserting one by
    * one sifted each key up). Keys are distinct (they end in the edge's ends), so the order of
    * pops is that of the keys whatever the layout. */
@@ -672,23 +670,17 @@ EdgeCollapser::evaluate(int e, bool check_flips) const
     }
     ++num_tests;
   };
-  bool has_faces = false; // a triangle on ab (it disappears with the collapse)
-  if (!check_flips || !settings_.prevent_inversion) {
-    // Kept per edge: scanning a's triangles here was a cache miss per triangle, on the most
-    // frequent call (every edge of a merged sphere, after every collapse).
-    has_faces = e_state_[e].has_faces;
-  }
-  else {
+  // A triangle on ab (it disappears with the collapse). Kept per edge: scanning a's triangles
+  // for it was a cache miss per triangle on the most frequent call (every edge of a merged
+  // sphere, after every collapse).
+  const bool has_faces = e_state_[e].has_faces;
+  if (check_flips && settings_.prevent_inversion) {
     for (int v : {a, b})
       for (int f : v_faces_[v]) {
         const auto& t = f_v_[f];
         const int k = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
         const int q1 = t[(k + 1) % 3], q2 = t[(k + 2) % 3];
-        if (q1 == a || q1 == b || q2 == a || q2 == b) {
-          has_faces = true;
-          continue;
-        }
-        if (f_normal_[f].isZero())
+        if (q1 == a || q1 == b || q2 == a || q2 == b || f_normal_[f].isZero())
           continue;
         const Eigen::Vector3d p1 = sphere_[q1].head<3>();
         const Eigen::Vector3d w = (sphere_[q2].head<3>() - p1).cross(f_normal_[f]);
@@ -981,7 +973,7 @@ EdgeCollapser::collapse(int e, const Eigen::Vector4d& target)
   auto changed = [&](int f) { return f >= 0 && (!f_alive_[f] || hasVertex(f, m)); };
   // The two-ring is gathered first, each record prefetched, so that its cache misses overlap
   // instead of following one another (they were most of this loop's time). Same order.
-  std::vector<int>& ring = scratch_;
+  std::vector<int>& ring = scratch_; // linkCondition()'s buffer, free here
   ring.clear();
   for (int e2 : v_edges_[m]) {
     const int x = other(e2, m);

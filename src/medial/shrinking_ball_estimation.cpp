@@ -6,8 +6,8 @@
 #include <segmat/medial/shrinking_ball_estimation.h>
 
 #include "../common/point_kd_tree.h"
-#include "local_fit.h"
 #include "../common/thread_count.h"
+#include "local_fit.h"
 
 #include <pcl/console/print.h>
 

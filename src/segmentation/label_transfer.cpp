@@ -296,7 +296,8 @@ voxelKey(const pcl::PointXYZ& p, const Eigen::Vector3d& lo, double h)
  * sqrt(count / target) (a surface's voxel count goes as 1/h²), counting on a 4·target-point
  * subsample. node_of_point[i] becomes the voxel number of point i (-1 for points not in
  * \a finite); reps lists the representatives in voxel-key order (spatially coherent, which the
- * data term's search likes). \a threads: of the spacing search (the result does not depend on it).
+ * data term's search likes). \a threads: of the spacing search (the result does not depend on
+ * it).
  */
 void
 sampleVoxelRepresentatives(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
