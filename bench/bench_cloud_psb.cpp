@@ -12,7 +12,7 @@
  * Usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6,...] [--json] [--conditions abc]
  *        [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] [--reference-crease]
  *        [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F]
- *        [--consensus-runs N] [--consensus-merge F]
+ *        [--consensus-runs N] [--consensus-merge F] [--noisy-boundary-merge F]
  *   PSB_DIR defaults to ../shared/data/psb-dev (off/N.off, seg/Benchmark/N/N_k.seg).
  *   --dump DIR writes DIR/<model>_<a|b|c>.txt: "x y z label truth nx ny nz" per point (the
  *   cloud as segmented, our label, the first human's label, the sample's true normal).
@@ -29,6 +29,8 @@
  *   (CloudSegmentation::setConsensusRuns; 1: a single run as before the consensus).
  *   --consensus-merge F co-association above which each consensus run's adjacent parts merge
  *   before the medoid is chosen (CloudSegmentation::setConsensusMergeThreshold; 2: none).
+ *   --noisy-boundary-merge F  κ of the long-boundary merge for noisy clouds
+ *   (CloudSegmentation::setNoisyBoundaryMergeFactor; 0: off).
  */
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"
@@ -87,6 +89,7 @@ struct Settings
   double omega = -1.0;    ///< transfer smoothness ω (< 0: the library's)
   int consensus_runs = -1; ///< runs of a noisy cloud (< 0: the library's)
   double consensus_merge = -1.0; ///< merge threshold (< 0: the library's)
+  double noisy_boundary = -1.0;  ///< long-boundary merge factor of noisy clouds (< 0: the library's)
 };
 
 /// The mesh path's face labels scored on \a sampled's points (1 − RI, mean over humans); with
@@ -132,6 +135,8 @@ run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int
     seg.setConsensusRuns(settings.consensus_runs);
   if (settings.consensus_merge >= 0.0)
     seg.setConsensusMergeThreshold(settings.consensus_merge);
+  if (settings.noisy_boundary >= 0.0)
+    seg.setNoisyBoundaryMergeFactor(settings.noisy_boundary);
   if (settings.meso_skeleton)
     seg.setMedialAxis(segmat::CloudMedialAxis::MesoSkeleton);
   if (settings.smoothing >= 0) {
@@ -231,6 +236,8 @@ main(int argc, char** argv)
       settings.consensus_runs = std::stoi(argv[++i]);
     else if (arg == "--consensus-merge" && i + 1 < argc)
       settings.consensus_merge = std::stod(argv[++i]);
+    else if (arg == "--noisy-boundary-merge" && i + 1 < argc)
+      settings.noisy_boundary = std::stod(argv[++i]);
     else if (arg == "--no-visibility")
       settings.visibility = false;
     else if (arg == "--mesh-path")
@@ -244,7 +251,7 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json] "
                    "[--conditions abc] [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] "
-                   "[--reference-crease] [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F] [--consensus-runs N] [--consensus-merge F]\n";
+                   "[--reference-crease] [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F] [--consensus-runs N] [--consensus-merge F] [--noisy-boundary-merge F]\n";
       return 2;
     }
   }

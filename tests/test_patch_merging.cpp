@@ -66,6 +66,11 @@ TEST(PatchMerging, SphereSharingPairs)
   const std::vector<std::pair<int, int>> expected{{0, 1}, {0, 4}, {1, 3}, {1, 4}, {2, 3}, {2, 4},
                                                   {3, 4}};
   EXPECT_EQ(pairs, expected);
+  // Shared spheres per pair: P0 = {0,1,2} and P1 = {1,2,3} share 1 and 2; P1 and P2 share 3.
+  std::vector<int> shared;
+  EXPECT_EQ(sphereSharingPairs({{0, 1, 2}, {1, 2, 3}, {3, 4}, {5}}, 6, &shared),
+            (std::vector<std::pair<int, int>>{{0, 1}, {1, 2}}));
+  EXPECT_EQ(shared, (std::vector<int>{2, 1}));
 }
 
 TEST(PatchMerging, RandomPointsFillTheBallUniformly)
@@ -150,6 +155,53 @@ TEST(PatchMerging, MergeRoundJoinsSimilarAdjacentVisiblePatches)
   // A limit above every EMD joins everything adjacent; P3 stays alone.
   EXPECT_EQ(mergeRoundGroups(patches, h, bin.spacing, c, r, 1.0, 0.8, open, 5, 0),
             (std::vector<int>{0, 0, 0, 1}));
+}
+
+TEST(PatchMerging, LongSharedBoundaryMergesWithoutVisibility)
+{
+  // A sheet of 9 × 9 spheres cut by noise down its middle column: P0 = columns 0–4, P1 =
+  // columns 4–8 (column 4, 9 spheres, shared). P2 = a limb of 25 spheres sharing one sphere with
+  // P1 (a ring cut down to one sphere). All radii equal: every EMD is 0. Nobody sees anybody.
+  std::vector<Eigen::Vector3d> c;
+  std::vector<int> p0, p1, p2;
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 9; ++j) {
+      const int s = static_cast<int>(c.size());
+      c.emplace_back(i, j, 0);
+      if (i <= 4)
+        p0.push_back(s);
+      if (i >= 4)
+        p1.push_back(s);
+    }
+  p2.push_back(80); // the sheet's corner sphere (8, 8)
+  for (int k = 1; k < 25; ++k) {
+    p2.push_back(static_cast<int>(c.size()));
+    c.emplace_back(8, 8, k);
+  }
+  std::sort(p2.begin(), p2.end());
+  const std::vector<double> r(c.size(), 0.5);
+  const std::vector<std::vector<int>> patches{p0, p1, p2};
+  const RadiusBinning bin = makeRadiusBinning(r);
+  std::vector<std::vector<double>> h;
+  for (const auto& p : patches)
+    h.push_back(radiusHistogram(p, r, bin));
+  const auto closed = [](const Eigen::Vector3d&, const Eigen::Vector3d&) { return false; };
+  // Off (SEG-MAT): the closed gate keeps all three apart.
+  EXPECT_EQ(mergeRoundGroups(patches, h, bin.spacing, c, r, 0.1, 0.8, closed, 5, 0, {}, 0.0),
+            (std::vector<int>{0, 1, 2}));
+  // κ = 1.8: P0–P1 share 9 ≥ 1.8·√45 = 12.07? No: 9 < 12.07, still apart.
+  EXPECT_EQ(mergeRoundGroups(patches, h, bin.spacing, c, r, 0.1, 0.8, closed, 5, 0, {}, 1.8),
+            (std::vector<int>{0, 1, 2}));
+  // κ = 1.3: 9 ≥ 1.3·√45 = 8.72 joins the sheet; the limb shares 1 < 1.3·√25 = 6.5 and stays.
+  EXPECT_EQ(mergeRoundGroups(patches, h, bin.spacing, c, r, 0.1, 0.8, closed, 5, 0, {}, 1.3),
+            (std::vector<int>{0, 0, 1}));
+  // The EMD test still applies: with a limit of 0 nothing merges (EMD 0 is not below 0).
+  EXPECT_EQ(mergeRoundGroups(patches, h, bin.spacing, c, r, 0.0, 0.8, closed, 5, 0, {}, 1.3),
+            (std::vector<int>{0, 1, 2}));
+}
+
+TEST(PatchMerging, DefaultRounds)
+{
   ASSERT_EQ(defaultMergeRounds().size(), 3u);
   EXPECT_EQ(defaultMergeRounds()[2].visibility_ratio, 1.0);
   EXPECT_EQ(defaultMergeRounds()[2].emd_factor, 0.3);

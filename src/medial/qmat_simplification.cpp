@@ -455,6 +455,10 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
   q_.resize(n);
   v_edges_.resize(n);
   v_faces_.resize(n);
+  for (int i = 0; i < n; ++i) { // exact sizes: one allocation per list, no regrowth
+    v_edges_[i].reserve(mat.vertexEdges(kept[order[i]]).size());
+    v_faces_[i].reserve(mat.vertexTriangles(kept[order[i]]).size());
+  }
 
   // Edges and triangles in the order of their smallest internal corner, for the same reason.
   // Ids sorted by (ascending corner triple, id). Corners lie in [-1, n), so three stable

@@ -94,7 +94,8 @@ maxPairwiseEmd(const std::vector<std::vector<double>>& histograms, double spacin
 }
 
 std::vector<std::pair<int, int>>
-sphereSharingPairs(const std::vector<std::vector<int>>& patch_spheres, std::size_t num_spheres)
+sphereSharingPairs(const std::vector<std::vector<int>>& patch_spheres, std::size_t num_spheres,
+                   std::vector<int>* shared)
 {
   std::vector<std::vector<int>> sphere_patches(num_spheres);
   for (std::size_t p = 0; p < patch_spheres.size(); ++p)
@@ -107,8 +108,20 @@ sphereSharingPairs(const std::vector<std::vector<int>>& patch_spheres, std::size
       for (std::size_t j = i + 1; j < owners.size(); ++j)
         pairs.emplace_back(owners[i], owners[j]); // owners ascend: first < second
   std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  return pairs;
+  // One entry per shared sphere: the run length of a pair is its number of shared spheres.
+  std::vector<std::pair<int, int>> unique_pairs;
+  if (shared)
+    shared->clear();
+  for (std::size_t i = 0; i < pairs.size();) {
+    std::size_t j = i + 1;
+    while (j < pairs.size() && pairs[j] == pairs[i])
+      ++j;
+    unique_pairs.push_back(pairs[i]);
+    if (shared)
+      shared->push_back(static_cast<int>(j - i));
+    i = j;
+  }
+  return unique_pairs;
 }
 
 Eigen::Vector3d
@@ -167,25 +180,45 @@ mergeRoundGroups(const std::vector<std::vector<int>>& patch_spheres,
                  const std::vector<Eigen::Vector3d>& centers, const std::vector<double>& radii,
                  double emd_limit, double visibility_ratio, const SegmentVisibility& visible,
                  std::uint32_t seed, int round,
-                 const std::vector<std::pair<int, int>>& extra_pairs)
+                 const std::vector<std::pair<int, int>>& extra_pairs,
+                 double shared_boundary_factor)
 {
   const int n = static_cast<int>(patch_spheres.size());
   std::vector<int> rank(n, 0), parent(n);
   for (int i = 0; i < n; ++i)
     parent[i] = i;
   boost::disjoint_sets<int*, int*> sets(rank.data(), parent.data());
-  std::vector<std::pair<int, int>> pairs = sphereSharingPairs(patch_spheres, centers.size());
+  std::vector<int> shared_counts;
+  const std::vector<std::pair<int, int>> sharing =
+      sphereSharingPairs(patch_spheres, centers.size(), &shared_counts);
+  std::vector<std::pair<int, int>> pairs = sharing;
   if (!extra_pairs.empty()) {
     pairs.insert(pairs.end(), extra_pairs.begin(), extra_pairs.end());
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   }
+  // A sheet cut by noise shares a line of spheres along its cut, ~√(spheres) of the smaller
+  // piece or more; a limb bent at a joint shares a ring, far fewer relative to its size.
+  auto longBoundary = [&](int a, int b) {
+    if (!(shared_boundary_factor > 0.0))
+      return false;
+    const auto it = std::lower_bound(sharing.begin(), sharing.end(), std::make_pair(a, b));
+    if (it == sharing.end() || *it != std::make_pair(a, b))
+      return false;
+    const double smaller = static_cast<double>(
+        std::min(patch_spheres[a].size(), patch_spheres[b].size()));
+    return shared_counts[it - sharing.begin()] >= shared_boundary_factor * std::sqrt(smaller);
+  };
   for (const auto& [a, b] : pairs) {
     // Cheap test first: the visibility test costs up to (|a|/3)·(|b|/3) segment queries.
     if (!(histogramEmd(histograms[a], histograms[b], spacing) < emd_limit))
       continue;
     if (sets.find_set(a) == sets.find_set(b))
       continue; // already joined: the visibility of this pair cannot change the groups
+    if (longBoundary(a, b)) {
+      sets.union_set(a, b);
+      continue;
+    }
     std::seed_seq mix{seed, static_cast<std::uint32_t>(round), static_cast<std::uint32_t>(a),
                       static_cast<std::uint32_t>(b)};
     std::uint32_t pair_seed;

@@ -192,7 +192,9 @@ labelInputPoints(const std::vector<int>& input_to_working, const std::vector<int
  *     working point standing for it (its voxel's representative): "labels".
  * With the medial mesh (the default axis, CloudMedialAxis::MedialMesh), a cloud that the
  * preprocessing finds noisy goes through stages 2–5 several times with differently thinned
- * Voronoi samples, and the consensus run is kept (setConsensusRuns).
+ * Voronoi samples, and the consensus run is kept (setConsensusRuns); its grower also merges
+ * patches that share a long boundary without the visibility test
+ * (setNoisyBoundaryMergeFactor).
  * Parts are numbered by descending point count. A cloud that encloses no volume (a flat patch,
  * a handful of points) is one part, with a warning.
  *
@@ -324,6 +326,21 @@ public:
   getConsensusMergeThreshold() const
   {
     return consensus_merge_threshold_;
+  }
+
+  /** \brief κ of MatRegionGrowing::setSharedBoundaryMergeFactor() for clouds treated as noisy
+   * (default 2; 0: off). Patches of a noisy cloud's medial mesh that share a long boundary merge
+   * without the visibility test: noise cuts plates and rims along lines of spheres, and the
+   * pieces of a cut sheet need not see each other through the noisy ball union. Clean clouds
+   * (and meshes) merge as SEG-MAT does. */
+  void
+  setNoisyBoundaryMergeFactor(double factor);
+
+  /** \brief κ of the long-boundary merge for clouds treated as noisy. */
+  double
+  getNoisyBoundaryMergeFactor() const
+  {
+    return noisy_boundary_factor_;
   }
 
   /** \brief Apply setConsensusRuns() to every cloud, not only to noisy ones (default false;
@@ -517,6 +534,7 @@ private:
   int consensus_runs_ = 9;
   double consensus_merge_threshold_ = 0.4;
   bool consensus_every_cloud_ = false;
+  double noisy_boundary_factor_ = 2.0;
   int runs_made_ = 0;
   int run_kept_ = 0;
 

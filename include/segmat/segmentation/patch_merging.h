@@ -59,9 +59,11 @@ maxPairwiseEmd(const std::vector<std::vector<double>>& histograms, double spacin
 /** \brief Pairs (a < b) of patches that share at least one sphere, sorted.
  * \param[in] patch_spheres sorted unique sphere indices of each patch
  * \param[in] num_spheres number of spheres (indices are below it)
+ * \param[out] shared if set, the number of spheres each returned pair shares
  */
 std::vector<std::pair<int, int>>
-sphereSharingPairs(const std::vector<std::vector<int>>& patch_spheres, std::size_t num_spheres);
+sphereSharingPairs(const std::vector<std::vector<int>>& patch_spheres, std::size_t num_spheres,
+                   std::vector<int>* shared = nullptr);
 
 /** \brief A point uniformly distributed in a ball, from the raw engine output (the same numbers on
  * every standard library): rejection sampling in the bounding cube.
@@ -108,6 +110,9 @@ defaultMergeRounds();
  * \param[in] round round number, only mixed into the seed
  * \param[in] extra_pairs further adjacent patch pairs (first < second), e.g. patches joined by a
  *            MAT-graph edge: medial points of a cloud have one sphere each and never share one
+ * \param[in] shared_boundary_factor κ > 0: two patches sharing at least κ·√(spheres of the
+ *            smaller one) spheres join without the visibility test (EMD still applies) — the
+ *            long common boundary of a sheet that noise cut; 0 (default): off, as the reference
  * \return the group of each patch; groups are numbered in order of their lowest patch, so group
  *         k's lowest patch comes before group k+1's
  */
@@ -117,6 +122,7 @@ mergeRoundGroups(const std::vector<std::vector<int>>& patch_spheres,
                  const std::vector<Eigen::Vector3d>& centers, const std::vector<double>& radii,
                  double emd_limit, double visibility_ratio, const SegmentVisibility& visible,
                  std::uint32_t seed, int round,
-                 const std::vector<std::pair<int, int>>& extra_pairs = {});
+                 const std::vector<std::pair<int, int>>& extra_pairs = {},
+                 double shared_boundary_factor = 0.0);
 
 } // namespace segmat

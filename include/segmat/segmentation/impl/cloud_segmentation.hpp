@@ -62,6 +62,18 @@ CloudSegmentation<PointT>::setConsensusMergeThreshold(double threshold)
 }
 
 template <typename PointT>
+void
+CloudSegmentation<PointT>::setNoisyBoundaryMergeFactor(double factor)
+{
+  if (!(factor >= 0.0)) {
+    PCL_WARN("[segmat::CloudSegmentation::setNoisyBoundaryMergeFactor] The factor must be "
+             ">= 0; keeping %g.\n", noisy_boundary_factor_);
+    return;
+  }
+  noisy_boundary_factor_ = factor;
+}
+
+template <typename PointT>
 bool
 CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
 {
@@ -103,12 +115,16 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
       stage_seconds_.emplace_back("preprocessing", stats.seconds_preprocessing);
       input_to_working_ = detail::inputToWorking(input_->size(), *indices_, copy_to_working);
       const bool noisy = stats.smoothing_passes > 0;
-      runs_made_ = noisy || consensus_every_cloud_ ? consensus_runs_ : 1;
+      const bool treat_as_noisy = noisy || consensus_every_cloud_;
+      runs_made_ = treat_as_noisy ? consensus_runs_ : 1;
+      MatRegionGrowing grower = grower_;
+      if (treat_as_noisy)
+        grower.setSharedBoundaryMergeFactor(noisy_boundary_factor_);
       detail::MedialMeshRun run;
       const detail::MedialMeshRunStatus status = detail::segmentWithMedialMesh(
           *working_, runs_made_, consensus_merge_threshold_,
           stats.normals_estimated && fragmented_mat_retry_, params.orientation_k, k_, visibility_,
-          params.threads, mesh_estimation_, grower_, transfer_, run, run_kept_, stage_seconds_);
+          params.threads, mesh_estimation_, grower, transfer_, run, run_kept_, stage_seconds_);
       if (status == detail::MedialMeshRunStatus::Failed) {
         stage_seconds_.clear();
         deinitCompute();
