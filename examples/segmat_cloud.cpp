@@ -43,6 +43,8 @@ const char* const kUsage =
     "                     1: one run). --runs-always: for every cloud, not only noisy ones\n"
     "  --runs-merge F     merge each run's adjacent parts that the runs join with a\n"
     "                     mean co-association above F (default 0.4; above 1: no merging)\n"
+    "  --boundary-merge K parts of a noisy cloud that share at least K*sqrt(n) spheres merge\n"
+    "                     without the visibility test (default 2; 0: off, as in SEG-MAT)\n"
     "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"
     "  --json             print one JSON object: parts, point_counts, seconds per stage\n"
     "                     (summed over the runs), runs [made, kept], origin (what a cloud far\n"
@@ -122,6 +124,12 @@ main(int argc, char** argv)
         if (!(threshold >= 0.0))
           throw segmat::Error("option --runs-merge: the threshold must be >= 0");
         segmentation.setConsensusMergeThreshold(threshold);
+      }
+      else if (arg == "--boundary-merge") {
+        const double factor = parseNumber(arg, value());
+        if (!(factor >= 0.0))
+          throw segmat::Error("option --boundary-merge: the factor must be >= 0");
+        segmentation.setNoisyBoundaryMergeFactor(factor);
       }
       else if (arg == "--runs-always")
         segmentation.setConsensusForEveryCloudFlag(true);

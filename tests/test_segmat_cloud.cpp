@@ -153,6 +153,9 @@ TEST(SegmatCloud, BadArgumentsAndFilesFailWithAMessage)
   run = test::runProgram("segmat_cloud", "x.pcd -o " + prefix + " --max-bend 120");
   EXPECT_EQ(run.status, 2);
   EXPECT_NE(run.err.find("--max-bend"), std::string::npos) << run.err;
+  run = test::runProgram("segmat_cloud", "x.pcd -o " + prefix + " --boundary-merge -1");
+  EXPECT_EQ(run.status, 2);
+  EXPECT_NE(run.err.find("--boundary-merge"), std::string::npos) << run.err;
   run = test::runProgram("segmat_cloud", "x.pcd -o " + prefix + " --frobnicate");
   EXPECT_EQ(run.status, 2);
   // A missing file, an empty cloud, an all-NaN cloud: exit 1, nothing written.
