@@ -11,13 +11,15 @@
  *
  * Usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6,...] [--json] [--conditions abc]
  *        [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] [--reference-crease]
- *        [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F]
+ *        [--noise-seeds N] [--first-noise-seed S] [--dump DIR] [--mesh-path] [--no-visibility]
+ *        [--eta F] [--omega F]
  *        [--consensus-runs N] [--consensus-merge F] [--noisy-boundary-merge F]
  *   PSB_DIR defaults to ../shared/data/psb-dev (off/N.off, seg/Benchmark/N/N_k.seg).
  *   --dump DIR writes DIR/<model>_<a|b|c>.txt: "x y z label truth nx ny nz" per point (the
  *   cloud as segmented, our label, the first human's label, the sample's true normal).
  *   --noise-seeds N scores condition (c) as the mean over N noise draws (default 1): one noisy
- *   cloud's parts change with the draw by tenths of RI per model.
+ *   cloud's parts change with the draw by tenths of RI per model. --first-noise-seed S draws
+ *   with seeds S, S + 1, ... instead of 2, 3, ... (held-out draws for a setting chosen on those).
  *   --mesh-path also segments each mesh with the mesh path (MeshSegmentation, defaults), clean
  *   and with its vertices moved by the same Gaussian noise (0.5 % of the diagonal, the same seeds
  *   and number of draws), and scores its face labels on the same clean points through their
@@ -82,6 +84,7 @@ struct Settings
   bool keep_inside = false;
   bool reference_crease = false;
   int noise_seeds = 1;  ///< condition (c): noise draws averaged
+  int first_noise_seed = 2; ///< condition (c): seed of the first draw
   std::string dump_dir; ///< when set: one point file per model and condition (see Usage)
   bool mesh_path = false; ///< also score the mesh path, clean and with noisy vertices
   bool visibility = true; ///< merging tests visibility in the ball union
@@ -172,7 +175,8 @@ run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int
   return r;
 }
 
-/// Condition (c): the mean over settings.noise_seeds noise draws (seeds 2, 3, ...); a noisy
+/// Condition (c): the mean over settings.noise_seeds noise draws (seeds 2, 3, ... unless
+/// --first-noise-seed says otherwise); a noisy
 /// cloud's parts change with the draw, so one draw says less than the mean of a few.
 Result
 runNoisy(const SampledCloud& clean, const std::vector<std::vector<int>>& truths,
@@ -181,7 +185,7 @@ runNoisy(const SampledCloud& clean, const std::vector<std::vector<int>>& truths,
   Result mean;
   for (int s = 0; s < settings.noise_seeds; ++s) {
     SampledCloud noisy = clean;
-    segmat::test::addGaussianNoise(noisy, 0.005, 2 + s);
+    segmat::test::addGaussianNoise(noisy, 0.005, settings.first_noise_seed + s);
     Settings once = settings;
     if (s > 0)
       once.dump_dir.clear(); // the first draw is the one dumped
@@ -228,6 +232,8 @@ main(int argc, char** argv)
       settings.smoothing = std::stoi(argv[++i]);
     else if (arg == "--noise-seeds" && i + 1 < argc)
       settings.noise_seeds = std::max(1, std::stoi(argv[++i]));
+    else if (arg == "--first-noise-seed" && i + 1 < argc)
+      settings.first_noise_seed = std::stoi(argv[++i]);
     else if (arg == "--eta" && i + 1 < argc)
       settings.eta = std::stod(argv[++i]);
     else if (arg == "--omega" && i + 1 < argc)
@@ -251,7 +257,7 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json] "
                    "[--conditions abc] [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] "
-                   "[--reference-crease] [--noise-seeds N] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F] [--consensus-runs N] [--consensus-merge F] [--noisy-boundary-merge F]\n";
+                   "[--reference-crease] [--noise-seeds N] [--first-noise-seed S] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F] [--consensus-runs N] [--consensus-merge F] [--noisy-boundary-merge F]\n";
       return 2;
     }
   }
