@@ -9,6 +9,7 @@
 #include <pcl/point_cloud.h>
 
 #include <cmath>
+#include <set>
 
 using namespace segmat;
 
@@ -70,6 +71,47 @@ TEST(MedialMesh, NormalisesAndDerivesIncidence)
   EXPECT_EQ(m.vertexEdges(4).size(), 1u);
   EXPECT_DOUBLE_EQ(m.maxRadius(), 0.5);
   EXPECT_DOUBLE_EQ(m.centerBoundingBoxDiagonal(), std::sqrt(8.0));
+}
+
+TEST(MedialMesh, TrianglesAloneGrowTheEdgeTableAndKeepFirstAppearanceOrder)
+{
+  // A 30 × 30 grid of squares, two triangles each, no edges given: the edge table (sized for
+  // the given edges plus half the triangle sides) must grow several times. A disk: E = V + F − 1.
+  const int k = 30;
+  std::vector<Eigen::Vector3d> c;
+  for (int j = 0; j <= k; ++j)
+    for (int i = 0; i <= k; ++i)
+      c.emplace_back(i, j, 0);
+  const std::vector<double> r(c.size(), 0.25);
+  std::vector<Eigen::Vector3i> t;
+  auto id = [k](int i, int j) { return j * (k + 1) + i; };
+  for (int j = 0; j < k; ++j)
+    for (int i = 0; i < k; ++i) {
+      t.emplace_back(id(i, j), id(i + 1, j), id(i + 1, j + 1));
+      t.emplace_back(id(i, j), id(i + 1, j + 1), id(i, j + 1));
+    }
+  const MedialMesh m(c, r, {}, t);
+  ASSERT_EQ(m.numTriangles(), t.size());
+  EXPECT_EQ(m.numEdges(), c.size() + t.size() - 1); // 961 + 1800 − 1 = 2760
+  // Ids in order of first appearance of each side, walking the triangles' sides in order.
+  std::vector<std::pair<int, int>> expected;
+  std::set<std::pair<int, int>> seen;
+  for (const Eigen::Vector3i& f : t)
+    for (int s = 0; s < 3; ++s) {
+      const std::pair<int, int> e{std::min(f[s], f[(s + 1) % 3]), std::max(f[s], f[(s + 1) % 3])};
+      if (seen.insert(e).second)
+        expected.push_back(e);
+    }
+  ASSERT_EQ(expected.size(), m.numEdges());
+  for (std::size_t e = 0; e < expected.size(); ++e) {
+    ASSERT_EQ(m.edges()[e][0], expected[e].first) << e;
+    ASSERT_EQ(m.edges()[e][1], expected[e].second) << e;
+  }
+  // Interior sides carry two triangles, the 4k border sides one.
+  int border = 0;
+  for (std::size_t e = 0; e < m.numEdges(); ++e)
+    border += m.edgeTriangleCount(static_cast<int>(e)) == 1;
+  EXPECT_EQ(border, 4 * k);
 }
 
 TEST(MedialMesh, CountsConnectedComponents)

@@ -73,11 +73,11 @@ MedialMesh::MedialMesh(std::vector<Eigen::Vector3d> centers, std::vector<double>
     const int id = static_cast<int>(edges_.size());
     edges_.emplace_back(std::min(a, b), std::max(a, b));
     if (2 * edges_.size() > capacity) {
-      std::vector<std::uint64_t> old_key(2 * capacity, kEmpty);
-      std::vector<int> old_edge(2 * capacity);
-      old_key.swap(slot_key);
-      old_edge.swap(slot_edge);
+      const std::vector<std::uint64_t> old_key = std::move(slot_key);
+      const std::vector<int> old_edge = std::move(slot_edge);
       capacity *= 2;
+      slot_key.assign(capacity, kEmpty);
+      slot_edge.assign(capacity, 0);
       for (std::size_t j = 0; j < old_key.size(); ++j)
         if (old_key[j] != kEmpty) {
           const std::size_t k = slotOf(old_key[j]);
