@@ -18,9 +18,7 @@
 #include <memory>
 #include <vector>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
+#include "../common/thread_count.h"
 
 namespace segmat {
 namespace {
@@ -528,10 +526,7 @@ EdgeCollapser::EdgeCollapser(const MedialMesh& mat, const Eigen::Vector3d& origi
   // per edge was megabytes of fresh pages to fault in.
   const int num_edges = static_cast<int>(e_v_.size());
   std::vector<QueueKey> first_key(num_edges);
-#ifdef _OPENMP
-  const int threads =
-      settings_.threads > 0 ? static_cast<int>(settings_.threads) : omp_get_max_threads();
-#endif
+  [[maybe_unused]] const int threads = detail::threadCount(settings_.threads);
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (int e = 0; e < num_edges; ++e) {
     const CollapseChoice c = evaluate(e, false);

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <segmat/common/checked_setter.h>
 #include <segmat/medial/impl/meso_skeleton_estimation.hpp>
 #include <segmat/segmentation/cloud_segmentation.h>
 
@@ -53,24 +54,16 @@ template <typename PointT>
 void
 CloudSegmentation<PointT>::setConsensusMergeThreshold(double threshold)
 {
-  if (!(threshold >= 0.0)) {
-    PCL_WARN("[segmat::CloudSegmentation::setConsensusMergeThreshold] The threshold must be "
-             ">= 0; keeping %g.\n", consensus_merge_threshold_);
-    return;
-  }
-  consensus_merge_threshold_ = threshold;
+  detail::assignChecked(consensus_merge_threshold_, threshold, threshold >= 0.0,
+                        "CloudSegmentation::setConsensusMergeThreshold", ">= 0");
 }
 
 template <typename PointT>
 void
 CloudSegmentation<PointT>::setNoisyBoundaryMergeFactor(double factor)
 {
-  if (!(factor >= 0.0)) {
-    PCL_WARN("[segmat::CloudSegmentation::setNoisyBoundaryMergeFactor] The factor must be "
-             ">= 0; keeping %g.\n", noisy_boundary_factor_);
-    return;
-  }
-  noisy_boundary_factor_ = factor;
+  detail::assignChecked(noisy_boundary_factor_, factor, factor >= 0.0,
+                        "CloudSegmentation::setNoisyBoundaryMergeFactor", ">= 0 (0: off)");
 }
 
 template <typename PointT>
