@@ -11,8 +11,7 @@
 #include "local_fit.h"
 
 #include <pcl/console/print.h>
-#include <pcl/features/normal_3d_omp.h>
-#include <pcl/search/kdtree.h>
+#include <pcl/features/normal_3d.h>
 
 #include <algorithm>
 #include <cmath>
@@ -432,14 +431,32 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
     }
     for (std::size_t i = 0; i < cloud.size(); ++i)
       cloud[i].getVector3fMap() = positions[i];
+    // PCL's PCA normal and viewpoint flip (as NormalEstimationOMP computes them, same answers),
+    // with the neighbours from PointKdTree: pcl::search::KdTree's per-query set-up was most of
+    // this step's time.
     const pcl::PointCloud<pcl::PointXYZ>::Ptr xyz = detail::toXYZ(positions);
-    pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> estimation(threads_);
-    estimation.setInputCloud(xyz);
-    estimation.setSearchMethod(pcl::search::KdTree<pcl::PointXYZ>::Ptr(
-        new pcl::search::KdTree<pcl::PointXYZ>));
-    estimation.setKSearch(std::min<int>(normal_k_, static_cast<int>(cloud.size())));
+    detail::PointKdTree tree;
+    tree.setInputCloud(xyz);
     pcl::PointCloud<pcl::Normal> normals;
-    estimation.compute(normals);
+    normals.resize(cloud.size());
+    for (auto& nrm : normals)
+      nrm.normal_x = nrm.normal_y = nrm.normal_z = nrm.curvature =
+          std::numeric_limits<float>::quiet_NaN();
+    forEachNeighbourhood(
+        tree, std::min<int>(normal_k_, static_cast<int>(cloud.size())), 1, threads,
+        [&](int, int i, const pcl::Indices& near, const std::vector<float>&) {
+          Eigen::Vector4f plane;
+          float curvature;
+          if (!pcl::computePointNormal(*xyz, near, plane, curvature))
+            return;
+          pcl::Normal& nrm = normals[i];
+          nrm.normal_x = plane[0];
+          nrm.normal_y = plane[1];
+          nrm.normal_z = plane[2];
+          nrm.curvature = curvature;
+          pcl::flipNormalTowardsViewpoint((*xyz)[i], 0.0f, 0.0f, 0.0f, nrm.normal_x,
+                                          nrm.normal_y, nrm.normal_z);
+        });
     std::vector<int> usable;
     for (std::size_t i = 0; i < cloud.size(); ++i) {
       const Eigen::Vector3f nv = normals[i].getNormalVector3fMap();
