@@ -171,6 +171,52 @@ TEST(QmatSimplification, TargetsHonouredAndAutomaticStructuredTarget)
   EXPECT_EQ(b3.numTriangles(), sheet.numTriangles());
 }
 
+TEST(QmatSimplification, AutomaticStructuredTargetCountsBeyondPinnedSpheres)
+{
+  // A unit sheet (13 × 13 = 169 spheres) and 30 separate small triangles, as the islands of a noisy
+  // Voronoi MAT. Topology keeps 31 components, so at best 31 spheres (one per island, one for
+  // the sheet): the automatic target max(15, ⌊0.259⌋) = 15 is out of reach. Run down to 31,
+  // the sheet would be a single sphere; instead the structured MAT keeps 31 + 15 = 46 and the
+  // sheet keeps triangles. An explicit target of 15 still goes to the 31.
+  const MedialMesh sheet = test::planarSheet(12, 1.0, 0.1);
+  std::vector<Eigen::Vector3d> centers = sheet.centers();
+  std::vector<double> radii = sheet.radii();
+  std::vector<Eigen::Vector3i> triangles = sheet.triangles();
+  for (int i = 0; i < 30; ++i) {
+    const int first = static_cast<int>(centers.size());
+    const Eigen::Vector3d corner(2.0 + 0.2 * i, 0.0, 0.0);
+    for (const Eigen::Vector3d offset : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.05, 0, 0),
+                                         Eigen::Vector3d(0, 0.05, 0)}) {
+      centers.push_back(corner + offset);
+      radii.push_back(0.01);
+    }
+    triangles.emplace_back(first, first + 1, first + 2);
+  }
+  const MedialMesh mat(centers, radii, {}, triangles);
+  ASSERT_EQ(mat.numVertices(), 259u);
+  ASSERT_EQ(bettiNumbers(mat).b0, 31);
+
+  QmatSimplification q;
+  q.setInputMat(share(mat));
+  q.setBaseTarget(1000);
+  MedialMesh base, structured;
+  ASSERT_TRUE(q.compute(base, structured));
+  EXPECT_EQ(base.numVertices(), 259u);
+  EXPECT_EQ(q.getResolvedStructuredTarget(), 46);
+  ASSERT_EQ(structured.numVertices(), 46u);
+  EXPECT_EQ(bettiNumbers(structured).b0, 31);
+  int sheet_triangles = 0;
+  for (const Eigen::Vector3i& t : structured.triangles())
+    sheet_triangles += structured.centers()[t[0]].x() < 1.5 &&
+                       structured.centers()[t[1]].x() < 1.5 &&
+                       structured.centers()[t[2]].x() < 1.5;
+  EXPECT_GE(sheet_triangles, 2);
+
+  auto [literal_base, literal] = simplify(mat, 1000, 15);
+  EXPECT_EQ(literal.numVertices(), 31u);
+  EXPECT_EQ(literal.numTriangles(), 0u);
+}
+
 TEST(QmatSimplification, FlatSheetKeepsItsBorderWithoutFolding)
 {
   // Constant radius on a plane: every collapse is free (Q = 0) but for the border planes, so

@@ -1343,12 +1343,34 @@ QmatSimplification::compute(MedialMesh& base, MedialMesh& structured)
              base_target_, collapser.aliveCount());
   base = collapser.extract();
 
-  const std::size_t structured_target = static_cast<std::size_t>(resolved_structured_target_);
-  if (!stuck && structured_target < collapser.aliveCount() &&
-      collapser.run(structured_target) > structured_target)
-    PCL_WARN("[segmat::QmatSimplification::compute] structured target %d not reached: every "
-             "further collapse changes the topology; %zu spheres kept\n",
-             resolved_structured_target_, collapser.aliveCount());
+  std::size_t structured_target = static_cast<std::size_t>(resolved_structured_target_);
+  if (!stuck && structured_target < collapser.aliveCount()) {
+    // With the automatic target, a base MAT whose topology pins many spheres (islands, loops
+    // around holes: a noisy plate's medial sheet) is not run down to its minimal wireframe —
+    // that collapses every sheet, and thin plates lose the sheets the structure tags need. The
+    // target then counts spheres beyond the pinned ones (a deviation from SEG-MAT, which does
+    // not say what happens when the target is out of reach): redone from the base MAT, the
+    // simplification stops at pinned + target. An explicit target is taken literally.
+    std::unique_ptr<EdgeCollapser> from_base;
+    if (structured_target_ < 0)
+      from_base = std::make_unique<EdgeCollapser>(collapser);
+    if (collapser.run(structured_target) > structured_target) {
+      const std::size_t pinned = collapser.aliveCount();
+      if (from_base) {
+        structured_target += pinned;
+        resolved_structured_target_ = static_cast<int>(structured_target);
+        collapser = std::move(*from_base);
+        collapser.run(structured_target);
+        PCL_WARN("[segmat::QmatSimplification::compute] structured target %zu out of reach: "
+                 "the topology pins %zu spheres; %zu kept (pinned + target)\n",
+                 structured_target - pinned, pinned, collapser.aliveCount());
+      }
+      else
+        PCL_WARN("[segmat::QmatSimplification::compute] structured target %zu not reached: "
+                 "every further collapse changes the topology; %zu spheres kept\n",
+                 structured_target, pinned);
+    }
+  }
   structured = collapser.extract();
   collapse_count_ = collapser.collapses();
   penalised_collapse_count_ = collapser.penalisedCollapses();

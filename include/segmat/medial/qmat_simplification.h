@@ -113,7 +113,10 @@ public:
 
   /** \brief Number of spheres of the structured MAT.
    * \param[in] n >= 1, or −1 (default) for max(15, ⌊0.001 × initial spheres⌋) (SEG-MAT README).
-   * A value above the base target gives a structured MAT equal to the base MAT. */
+   * A value above the base target gives a structured MAT equal to the base MAT. When the
+   * automatic target cannot be reached because the topology pins P spheres (islands, holes of
+   * a noisy sheet), the structured MAT keeps P + target spheres instead of P (a deviation from
+   * SEG-MAT: collapsing to the minimal complex turns every sheet into a wireframe). */
   void setStructuredTarget(int n) { structured_target_ = n; }
   /** \brief Structured target as set (−1: automatic). */
   int getStructuredTarget() const { return structured_target_; }
@@ -162,7 +165,8 @@ public:
 
   /** \brief Spheres taken from the input (isolated ones dropped) in the last compute(). */
   std::size_t getInitialSphereCount() const { return initial_count_; }
-  /** \brief The structured target actually used in the last compute(). */
+  /** \brief The structured target actually used in the last compute() (raised by the pinned
+   * spheres when the automatic target was out of reach). */
   int getResolvedStructuredTarget() const { return resolved_structured_target_; }
   /** \brief Collapses performed in the last compute(). */
   std::size_t getCollapseCount() const { return collapse_count_; }
