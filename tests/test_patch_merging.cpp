@@ -200,6 +200,42 @@ TEST(PatchMerging, LongSharedBoundaryMergesWithoutVisibility)
             (std::vector<int>{0, 1, 2}));
 }
 
+TEST(PatchMerging, LongSharedBoundaryMustSpanManyRadii)
+{
+  // Two limbs of a noisy joint: each is a column of 20 spheres plus a shared ring of 9 spheres
+  // of radius 0.6 on a circle of radius 1. The count passes (9 ≥ 1.3·√29 = 7.0) but the ring's
+  // box diagonal, at most 2√2 = 2.83, is under 4.8 radii: a joint, not a cut, so the closed
+  // gate decides. Stretch the ring into a line 8 long (13.3 radii) and it is a cut: they merge.
+  for (const bool line : {false, true}) {
+    std::vector<Eigen::Vector3d> c;
+    std::vector<int> shared;
+    for (int k = 0; k < 9; ++k) {
+      shared.push_back(static_cast<int>(c.size()));
+      const double t = 2.0 * M_PI * k / 9.0;
+      c.push_back(line ? Eigen::Vector3d(k, 0, 0)
+                       : Eigen::Vector3d(std::cos(t), std::sin(t), 0));
+    }
+    std::vector<int> up = shared, down = shared;
+    for (int k = 1; k <= 20; ++k) {
+      up.push_back(static_cast<int>(c.size()));
+      c.emplace_back(0, 0, k);
+      down.push_back(static_cast<int>(c.size()));
+      c.emplace_back(0, 0, -k);
+    }
+    std::sort(up.begin(), up.end());
+    std::sort(down.begin(), down.end());
+    const std::vector<double> r(c.size(), 0.6);
+    const std::vector<std::vector<int>> patches{up, down};
+    const RadiusBinning bin = makeRadiusBinning(r);
+    const std::vector<std::vector<double>> h{radiusHistogram(up, r, bin),
+                                             radiusHistogram(down, r, bin)};
+    const auto closed = [](const Eigen::Vector3d&, const Eigen::Vector3d&) { return false; };
+    EXPECT_EQ(mergeRoundGroups(patches, h, bin.spacing, c, r, 0.1, 0.8, closed, 5, 0, {}, 1.3),
+              (line ? std::vector<int>{0, 0} : std::vector<int>{0, 1}))
+        << (line ? "line" : "ring");
+  }
+}
+
 TEST(PatchMerging, DefaultRounds)
 {
   ASSERT_EQ(defaultMergeRounds().size(), 3u);

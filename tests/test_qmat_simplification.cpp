@@ -217,6 +217,37 @@ TEST(QmatSimplification, AutomaticStructuredTargetCountsBeyondPinnedSpheres)
   EXPECT_EQ(literal.numTriangles(), 0u);
 }
 
+TEST(QmatSimplification, AutomaticStructuredTargetBeyondPinnedLoops)
+{
+  // Six loops of 30 cones (tunnels): each keeps at least a triangle of edges, so 18 spheres
+  // are pinned and the automatic target 15 is out of reach. With only 6 components the state
+  // at the base MAT is not kept in advance; the run to it is replayed. 18 + 15 = 33 spheres.
+  std::vector<Eigen::Vector3d> centers;
+  std::vector<double> radii;
+  std::vector<Eigen::Vector2i> edges;
+  for (int l = 0; l < 6; ++l) {
+    const MedialMesh loop = test::pureEdgeLoop(30, 1.0, 0.25);
+    const int first = static_cast<int>(centers.size());
+    for (std::size_t v = 0; v < loop.numVertices(); ++v) {
+      centers.push_back(loop.centers()[v] + Eigen::Vector3d(3.0 * l, 0, 0));
+      radii.push_back(loop.radii()[v]);
+    }
+    for (const Eigen::Vector2i& e : loop.edges())
+      edges.emplace_back(e[0] + first, e[1] + first);
+  }
+  const MedialMesh mat(centers, radii, edges, {});
+  QmatSimplification q;
+  q.setInputMat(share(mat));
+  q.setBaseTarget(1000);
+  MedialMesh base, structured;
+  ASSERT_TRUE(q.compute(base, structured));
+  EXPECT_EQ(q.getResolvedStructuredTarget(), 33);
+  EXPECT_EQ(structured.numVertices(), 33u);
+  const test::Betti betti = bettiNumbers(structured);
+  EXPECT_EQ(betti.b0, 6);
+  EXPECT_EQ(betti.b1, 6);
+}
+
 TEST(QmatSimplification, FlatSheetKeepsItsBorderWithoutFolding)
 {
   // Constant radius on a plane: every collapse is free (Q = 0) but for the border planes, so

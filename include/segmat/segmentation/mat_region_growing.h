@@ -205,7 +205,9 @@ public:
    * With κ > 0, two adjacent patches that share at least κ·√(spheres of the smaller one) spheres
    * and pass the round's radius-histogram (EMD) test merge even when they do not see each other.
    * Noise cuts a medial sheet (a plate, a rim) along a line of spheres, so its pieces share many;
-   * a limb bent at a joint shares a ring, few relative to its size, and stays apart.
+   * a limb bent at a joint shares a ring, few relative to its size, and stays apart. The shared
+   * spheres must also span a box diagonal of at least 8 of their median radii: a cut is long,
+   * while the shared spheres of a noisy joint can be many but stay within a few radii.
    * CloudSegmentation sets it for clouds it finds noisy (setNoisyBoundaryMergeFactor()).
    * \param[in] factor κ >= 0; other values are rejected with a warning
    */

@@ -112,7 +112,9 @@ defaultMergeRounds();
  *            MAT-graph edge: medial points of a cloud have one sphere each and never share one
  * \param[in] shared_boundary_factor κ > 0: two patches sharing at least κ·√(spheres of the
  *            smaller one) spheres join without the visibility test (EMD still applies) — the
- *            long common boundary of a sheet that noise cut; 0 (default): off, as the reference
+ *            long common boundary of a sheet that noise cut — provided the shared spheres'
+ *            box diagonal spans at least 8 of their median radii (a cut is long, the shared
+ *            ring of a joint stays within a few radii); 0 (default): off, as the reference
  * \return the group of each patch; groups are numbered in order of their lowest patch, so group
  *         k's lowest patch comes before group k+1's
  */
