@@ -42,7 +42,7 @@ const char* const kUsage =
     "  --runs N           segmentations of a noisy cloud to keep the consensus of (default 9;\n"
     "                     1: one run). --runs-always: for every cloud, not only noisy ones\n"
     "  --runs-merge F     merge each run's adjacent parts that the runs join with a\n"
-    "                     mean co-association above F (default 0.4; above 1: no merging)\n"
+    "                     mean co-association above F (default 0.5; above 1: no merging)\n"
     "  --boundary-merge K parts of a noisy cloud that share at least K*sqrt(n) spheres merge\n"
     "                     without the visibility test (default 2; 0: off, as in SEG-MAT)\n"
     "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"

@@ -85,11 +85,12 @@ majorityAgreement(const std::vector<int>& labels, const std::vector<int>& refere
   return agree;
 }
 
-/// A bundled PSB model (data/psb<N>/) as bench_cloud_psb's first noise draw: 20 000
-/// area-uniform points (seed 1) with Gaussian noise of 0.5 % of the diagonal (seed 2), and the
-/// first four humans' labels of the points (from their clean source faces).
+/// A bundled PSB model (data/psb<N>/) as a noise draw of bench_cloud_psb: 20 000 area-uniform
+/// points (seed 1) with Gaussian noise of 0.5 % of the diagonal (seed \a noise_seed; the
+/// bench's first draw is 2, `--first-noise-seed S` starts at S), and the first four humans'
+/// labels of the points (from their clean source faces).
 SampledCloud
-noisyPsbCloud(int model, std::vector<std::vector<int>>& truths)
+noisyPsbCloud(int model, std::vector<std::vector<int>>& truths, std::uint32_t noise_seed = 2)
 {
   const std::string dir = std::string(SEGMAT_DATA_DIR) + "/psb" + std::to_string(model) + "/";
   const TriangleMesh mesh = io::loadOff(dir + std::to_string(model) + ".off");
@@ -99,7 +100,7 @@ noisyPsbCloud(int model, std::vector<std::vector<int>>& truths)
     truths.push_back(noisy.pointLabels(io::loadSeg(
         dir + "seg/" + std::to_string(model) + "_" + std::to_string(k) + ".seg",
         long(mesh.numFaces()))));
-  addGaussianNoise(noisy, 0.005, 2);
+  addGaussianNoise(noisy, 0.005, noise_seed);
   return noisy;
 }
 
@@ -414,7 +415,7 @@ TEST(CloudSegmentation, SettersKeepValidValues)
   EXPECT_TRUE(seg.getVisibilityFlag());
   EXPECT_EQ(seg.getConsensusRuns(), 9);
   EXPECT_FALSE(seg.getConsensusForEveryCloudFlag());
-  EXPECT_DOUBLE_EQ(seg.getConsensusMergeThreshold(), 0.4);
+  EXPECT_DOUBLE_EQ(seg.getConsensusMergeThreshold(), 0.5);
   EXPECT_DOUBLE_EQ(seg.getNoisyBoundaryMergeFactor(), 2.0);
   seg.setNoisyBoundaryMergeFactor(-1.0);
   seg.setNoisyBoundaryMergeFactor(std::numeric_limits<double>::quiet_NaN());
@@ -429,7 +430,7 @@ TEST(CloudSegmentation, SettersKeepValidValues)
   EXPECT_EQ(seg.getKSearch(), 10);
   EXPECT_EQ(seg.getWorkingSize(), 20000u);
   EXPECT_EQ(seg.getConsensusRuns(), 9);
-  EXPECT_DOUBLE_EQ(seg.getConsensusMergeThreshold(), 0.4);
+  EXPECT_DOUBLE_EQ(seg.getConsensusMergeThreshold(), 0.5);
 }
 
 TEST(CloudSegmentation, NoisyBirdCutsThatMostRunsJoinAreMerged)
@@ -512,6 +513,40 @@ TEST(CloudSegmentation, NoisyGlassesRimsJoinAlongTheirLongBoundary)
   // pinned ones: off 10 parts, 0.227; on 6, 0.186).
   EXPECT_LT(on_count, off_count);
   EXPECT_LT(on, off - 0.01);
+}
+
+TEST(CloudSegmentation, NoisyChairSeatAndBackThatFewerThanHalfTheRunsJoinStayApart)
+{
+  // PSB chair 101 as bench_cloud_psb's draw of noise seed 10. Four of the nine runs grow the
+  // seat and the back into one part; their co-association is then just above 0.4, so a merge
+  // threshold of 0.4 joined them in the kept run; the default 0.5 merges only what most runs
+  // join.
+  std::vector<std::vector<int>> truths;
+  const SampledCloud noisy = noisyPsbCloud(101, truths, 10);
+  const auto cloud = noisy.toCloud<pcl::PointXYZ>();
+  auto segment = [&](double threshold, std::size_t& largest) {
+    CloudSegmentation<pcl::PointXYZ> seg;
+    seg.setInputCloud(cloud);
+    seg.setNumberOfThreads(2);
+    if (threshold > 0.0)
+      seg.setConsensusMergeThreshold(threshold);
+    std::vector<pcl::PointIndices> parts;
+    EXPECT_TRUE(seg.segment(parts));
+    EXPECT_EQ(seg.getConsensusRunsMade(), 9);
+    largest = parts.empty() ? 0 : parts.front().indices.size(); // parts come largest first
+    return meanRandIndexError(seg.getLabels(), truths);
+  };
+  std::size_t largest_04 = 0, largest_default = 0;
+  const double at_04 = segment(0.4, largest_04);
+  const double at_default = segment(-1.0, largest_default);
+  std::cout << "chair 101, noise seed 10: threshold 0.4 largest part " << largest_04
+            << " points, 1 - RI " << at_04 << "; default " << largest_default << ", "
+            << at_default << "\n";
+  // Measured over these four humans: 0.4 largest part 16 841 points (seat and back), 0.401;
+  // default 10 681 points (the seat), 0.074. The first human's seat and back: 9 757 and 5 387.
+  EXPECT_GT(largest_04, 15000u);
+  EXPECT_LT(largest_default, 12500u);
+  EXPECT_LT(at_default, at_04 - 0.15);
 }
 
 TEST(CloudSegmentation, NoisyChairWhoseMatFallsApartIsRetriedWithMirrorNormals)
