@@ -44,7 +44,7 @@ const char* const kUsage =
     "  --runs-merge F     merge each run's adjacent parts that the runs join with a\n"
     "                     mean co-association above F (default 0.5; above 1: no merging)\n"
     "  --boundary-merge K parts of a noisy cloud that share at least K*sqrt(n) spheres merge\n"
-    "                     without the visibility test (default 2; 0: off, as in SEG-MAT)\n"
+    "                     without the visibility test (default 0.5; 0: off, as in SEG-MAT)\n"
     "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"
     "  --json             print one JSON object: parts, point_counts, seconds per stage\n"
     "                     (summed over the runs), runs [made, kept], origin (what a cloud far\n"

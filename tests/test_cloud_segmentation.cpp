@@ -13,6 +13,7 @@
 #include <pcl/common/common.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <iostream>
 #include <map>
@@ -114,6 +115,40 @@ meanRandIndexError(const std::vector<int>& labels, const std::vector<std::vector
   return error;
 }
 
+/// Segments \a cloud on two threads after \a configure; \a parts gets the parts and
+/// \a runs_made the consensus runs made, the result is meanRandIndexError() against \a truths.
+double
+segmentNoisy(const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
+             const std::vector<std::vector<int>>& truths,
+             const std::function<void(CloudSegmentation<pcl::PointXYZ>&)>& configure,
+             std::vector<pcl::PointIndices>& parts, int* runs_made = nullptr)
+{
+  CloudSegmentation<pcl::PointXYZ> seg;
+  seg.setInputCloud(cloud);
+  seg.setNumberOfThreads(2);
+  configure(seg);
+  EXPECT_TRUE(seg.segment(parts));
+  if (runs_made)
+    *runs_made = seg.getConsensusRunsMade();
+  return meanRandIndexError(seg.getLabels(), truths);
+}
+
+/// segmentNoisy() with one run (so the long-boundary rule alone decides) and the noisy-boundary
+/// factor \a factor (< 0: the default); \a count gets the number of parts.
+double
+segmentOneRun(const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud,
+              const std::vector<std::vector<int>>& truths, double factor, std::size_t& count)
+{
+  std::vector<pcl::PointIndices> parts;
+  const double error = segmentNoisy(cloud, truths, [factor](auto& seg) {
+    seg.setConsensusRuns(1);
+    if (factor >= 0.0)
+      seg.setNoisyBoundaryMergeFactor(factor);
+  }, parts);
+  count = parts.size();
+  return error;
+}
+
 } // namespace
 
 TEST(CloudSegmentation, RandDistanceCountsPairsThatOneLabelingSplits)
@@ -143,6 +178,32 @@ TEST(CloudSegmentation, ConsensusIsTheLabelingClosestToTheOthers)
   EXPECT_EQ(detail::consensusLabeling({runs[2], runs[1], runs[3]}), 2);
   EXPECT_EQ(detail::consensusLabeling({runs[2]}), 0);
   EXPECT_EQ(detail::consensusLabeling({}), -1);
+}
+
+TEST(CloudSegmentation, ConsensusVoteMovesPointsToThePartTheRunsPutThemWith)
+{
+  // Six points; the kept run cuts them 3 | 3, two other runs 2 | 4.
+  const std::vector<int> kept = {0, 0, 0, 1, 1, 1};
+  const std::vector<int> other = {4, 4, 9, 9, 9, 9};
+  // Point 2, part 0 = {0,1,2}: kept run 3/3, each other run 1/3 (only point 2 itself has label
+  // 9 there) → 5/3; part 1 = {3,4,5}: 0 + 3/3 + 3/3 = 2 → it moves. Points 0, 1: part 0 gets
+  // 1 + 2/3 + 2/3, part 1 gets 0; points 3–5: part 1 gets 3, part 0 gets 2/3. The unlabelled
+  // point stays unlabelled.
+  std::vector<int> labels = kept;
+  EXPECT_EQ(detail::voteByConsensus({kept, other, other}, labels), 1);
+  EXPECT_EQ(labels, (std::vector<int>{0, 0, 1, 1, 1, 1}));
+  // One other run of two: point 2 gets 1 + 1/3 + 1 for part 0 against 0 + 1 + 0: it stays.
+  labels = kept;
+  EXPECT_EQ(detail::voteByConsensus({kept, other, kept}, labels), 0);
+  EXPECT_EQ(labels, kept);
+  labels = {0, 0, 0, 1, 1, -1};
+  detail::voteByConsensus({kept, other, other}, labels);
+  EXPECT_EQ(labels, (std::vector<int>{0, 0, 1, 1, 1, -1}));
+  // No runs, or one part: nothing to vote on.
+  labels = kept;
+  EXPECT_EQ(detail::voteByConsensus({}, labels), 0);
+  labels = {0, 0, 0};
+  EXPECT_EQ(detail::voteByConsensus({{0, 1, 1}}, labels), 0);
 }
 
 TEST(CloudSegmentation, ConsensusMergeJoinsWhatMostRunsJoin)
@@ -416,10 +477,10 @@ TEST(CloudSegmentation, SettersKeepValidValues)
   EXPECT_EQ(seg.getConsensusRuns(), 9);
   EXPECT_FALSE(seg.getConsensusForEveryCloudFlag());
   EXPECT_DOUBLE_EQ(seg.getConsensusMergeThreshold(), 0.5);
-  EXPECT_DOUBLE_EQ(seg.getNoisyBoundaryMergeFactor(), 2.0);
+  EXPECT_DOUBLE_EQ(seg.getNoisyBoundaryMergeFactor(), 0.5);
   seg.setNoisyBoundaryMergeFactor(-1.0);
   seg.setNoisyBoundaryMergeFactor(std::numeric_limits<double>::quiet_NaN());
-  EXPECT_DOUBLE_EQ(seg.getNoisyBoundaryMergeFactor(), 2.0);
+  EXPECT_DOUBLE_EQ(seg.getNoisyBoundaryMergeFactor(), 0.5);
   seg.setNoisyBoundaryMergeFactor(0.0);
   EXPECT_DOUBLE_EQ(seg.getNoisyBoundaryMergeFactor(), 0.0);
   seg.setKSearch(0);
@@ -467,20 +528,30 @@ TEST(CloudSegmentation, NoisyBirdCutsThatMostRunsJoinAreMerged)
   std::cout << "bird 246: medoid run " << unmerged_run << ", " << unmerged_count
             << " parts, 1 - RI " << unmerged_error << "; merged: run " << merged_run << ", "
             << merged_count << " parts, " << merged_error << "\n";
-  // Measured over these four humans: the plain medoid (run 7) 9 parts, 0.205; merged (run 1) 7
-  // parts, 0.141.
+  // Measured over these four humans: the plain medoid (run 0) 8 parts, 0.156; merged (run 0) 6
+  // parts, 0.101 (before κ = 0.5 and the vote: run 7, 9 parts, 0.205; run 1, 7 parts, 0.141).
   EXPECT_LT(merged_count, unmerged_count);
   EXPECT_LT(merged_error, unmerged_error - 0.03);
   // Merging only joins: each part is a union of the parts of the kept run alone (one run with
-  // its sample order).
+  // its sample order), up to the points the vote moves (243, ~1 %).
   const std::vector<int> run =
       segment(1, static_cast<unsigned int>(merged_run), 0.4, run_count, single_run);
   EXPECT_GT(run_count, merged_count);
-  std::map<int, int> merged_of;
-  std::size_t split = 0;
+  // Points whose merged part is not the one most points of their run part went to.
+  std::map<int, std::map<int, std::size_t>> merged_of;
   for (std::size_t i = 0; i < run.size(); ++i)
-    split += merged_of.emplace(run[i], merged[i]).first->second != merged[i];
-  EXPECT_EQ(split, 0u);
+    ++merged_of[run[i]][merged[i]];
+  std::size_t split = 0;
+  for (const auto& [part, into] : merged_of) {
+    std::size_t total = 0, most = 0;
+    for (const auto& [label, count] : into) {
+      total += count;
+      most = std::max(most, count);
+    }
+    split += total - most;
+  }
+  EXPECT_GT(split, 0u);
+  EXPECT_LT(split, run.size() / 50);
 }
 
 TEST(CloudSegmentation, NoisyGlassesRimsJoinAlongTheirLongBoundary)
@@ -492,20 +563,9 @@ TEST(CloudSegmentation, NoisyGlassesRimsJoinAlongTheirLongBoundary)
   std::vector<std::vector<int>> truths;
   const SampledCloud noisy = noisyPsbCloud(41, truths);
   const auto cloud = noisy.toCloud<pcl::PointXYZ>();
-  auto segment = [&](double factor, std::size_t& count) {
-    CloudSegmentation<pcl::PointXYZ> seg;
-    seg.setInputCloud(cloud);
-    seg.setNumberOfThreads(2);
-    seg.setConsensusRuns(1);
-    seg.setNoisyBoundaryMergeFactor(factor);
-    std::vector<pcl::PointIndices> parts;
-    EXPECT_TRUE(seg.segment(parts));
-    count = parts.size();
-    return meanRandIndexError(seg.getLabels(), truths);
-  };
   std::size_t off_count = 0, on_count = 0;
-  const double off = segment(0.0, off_count);
-  const double on = segment(2.0, on_count);
+  const double off = segmentOneRun(cloud, truths, 0.0, off_count);
+  const double on = segmentOneRun(cloud, truths, 2.0, on_count);
   std::cout << "glasses 41: off " << off_count << " parts, 1 - RI " << off << "; on "
             << on_count << " parts, " << on << "\n";
   // Measured over these four humans: off 9 parts, 0.119; on 7 parts, 0.106 (0.092 before the
@@ -513,6 +573,26 @@ TEST(CloudSegmentation, NoisyGlassesRimsJoinAlongTheirLongBoundary)
   // pinned ones: off 10 parts, 0.227; on 6, 0.186).
   EXPECT_LT(on_count, off_count);
   EXPECT_LT(on, off - 0.01);
+}
+
+TEST(CloudSegmentation, NoisyCupWallJoinsAlongItsLongBoundaryAtTheDefaultFactor)
+{
+  // PSB cup 26 as bench_cloud_psb's draw of noise seed 9: noise cuts the wall's medial sheet
+  // into strips that share lines of 7–15 spheres (about √n of the smaller strip, n = 17–90
+  // spheres), below the 2·√n that κ = 2 asked, so the wall fell into a dozen parts. One run each,
+  // so the rule alone decides.
+  std::vector<std::vector<int>> truths;
+  const SampledCloud noisy = noisyPsbCloud(26, truths, 9);
+  const auto cloud = noisy.toCloud<pcl::PointXYZ>();
+  std::size_t at_2_count = 0, default_count = 0;
+  const double at_2 = segmentOneRun(cloud, truths, 2.0, at_2_count);
+  const double at_default = segmentOneRun(cloud, truths, -1.0, default_count);
+  std::cout << "cup 26, seed 9: kappa 2 " << at_2_count << " parts, 1 - RI " << at_2
+            << "; default " << default_count << " parts, " << at_default << "\n";
+  // Measured over these four humans: κ = 2 13 parts, 0.701; default (0.5) 3 parts, 0.030.
+  EXPECT_GE(at_2_count, 8u);
+  EXPECT_LE(default_count, 4u);
+  EXPECT_LT(at_default, at_2 - 0.3);
 }
 
 TEST(CloudSegmentation, NoisyChairSeatAndBackThatFewerThanHalfTheRunsJoinStayApart)
@@ -525,16 +605,15 @@ TEST(CloudSegmentation, NoisyChairSeatAndBackThatFewerThanHalfTheRunsJoinStayApa
   const SampledCloud noisy = noisyPsbCloud(101, truths, 10);
   const auto cloud = noisy.toCloud<pcl::PointXYZ>();
   auto segment = [&](double threshold, std::size_t& largest) {
-    CloudSegmentation<pcl::PointXYZ> seg;
-    seg.setInputCloud(cloud);
-    seg.setNumberOfThreads(2);
-    if (threshold > 0.0)
-      seg.setConsensusMergeThreshold(threshold);
     std::vector<pcl::PointIndices> parts;
-    EXPECT_TRUE(seg.segment(parts));
-    EXPECT_EQ(seg.getConsensusRunsMade(), 9);
+    int runs = 0;
+    const double error = segmentNoisy(cloud, truths, [threshold](auto& seg) {
+      if (threshold > 0.0)
+        seg.setConsensusMergeThreshold(threshold);
+    }, parts, &runs);
+    EXPECT_EQ(runs, 9);
     largest = parts.empty() ? 0 : parts.front().indices.size(); // parts come largest first
-    return meanRandIndexError(seg.getLabels(), truths);
+    return error;
   };
   std::size_t largest_04 = 0, largest_default = 0;
   const double at_04 = segment(0.4, largest_04);
@@ -542,8 +621,9 @@ TEST(CloudSegmentation, NoisyChairSeatAndBackThatFewerThanHalfTheRunsJoinStayApa
   std::cout << "chair 101, noise seed 10: threshold 0.4 largest part " << largest_04
             << " points, 1 - RI " << at_04 << "; default " << largest_default << ", "
             << at_default << "\n";
-  // Measured over these four humans: 0.4 largest part 16 841 points (seat and back), 0.401;
-  // default 10 681 points (the seat), 0.074. The first human's seat and back: 9 757 and 5 387.
+  // Measured over these four humans: 0.4 largest part 16 627 points (seat and back), 0.383;
+  // default 10 761 points (the seat), 0.070 (16 841, 0.401 and 10 681, 0.074 before κ = 0.5 and
+  // the vote). The first human's seat and back: 9 757 and 5 387.
   EXPECT_GT(largest_04, 15000u);
   EXPECT_LT(largest_default, 12500u);
   EXPECT_LT(at_default, at_04 - 0.15);
@@ -615,8 +695,16 @@ TEST(CloudSegmentation, NoisyBearingIsTheConsensusOfFiveRuns)
   // consensus of five keeps run 3, 0.149.
   EXPECT_GT(single, 0.2);
   EXPECT_LT(score(consensus), 0.17);
-  // The kept run is that sample order's own segmentation: one run with its seed gives it again.
-  EXPECT_EQ(segment(1, static_cast<unsigned int>(consensus_made.second), kept_made), consensus);
+  // The kept run is that sample order's own segmentation: one run with its seed gives it again,
+  // up to the points the vote of the five runs moves (detail::voteByConsensus).
+  const std::vector<int> kept = segment(1, static_cast<unsigned int>(consensus_made.second), kept_made);
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < kept.size() && i < consensus.size(); ++i)
+    moved += kept[i] != consensus[i];
+  std::cout << "bearing 346: the vote moved " << moved << " of " << consensus.size() << " points\n";
+  EXPECT_EQ(kept.size(), consensus.size());
+  EXPECT_GT(moved, 0u);
+  EXPECT_LT(moved, consensus.size() / 20);
   // Runs side by side on three threads: the same consensus.
   std::pair<int, int> threaded_made;
   EXPECT_EQ(segment(5, 0, threaded_made, 3), consensus);

@@ -39,6 +39,35 @@ addStageSeconds(const std::vector<std::pair<std::string, double>>& more,
       mine->second += stage.second;
   }
 }
+/// Per run, the contingency of a labeling's parts (rows) with the run's labels (columns).
+struct ContingencyTable
+{
+  int width = 0;
+  std::vector<double> joint, rows;
+};
+
+std::vector<ContingencyTable>
+contingencyTables(const std::vector<std::vector<int>>& labelings, const std::vector<int>& labels,
+                  int count)
+{
+  std::vector<ContingencyTable> tables(labelings.size());
+  for (std::size_t r = 0; r < labelings.size(); ++r) {
+    const std::vector<int>& run = labelings[r];
+    const std::size_t n = std::min(run.size(), labels.size());
+    ContingencyTable& t = tables[r];
+    for (std::size_t i = 0; i < n; ++i)
+      t.width = std::max(t.width, run[i] + 1);
+    t.joint.assign(std::size_t(count) * t.width, 0.0);
+    t.rows.assign(count, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      if (labels[i] >= 0 && run[i] >= 0) {
+        t.joint[std::size_t(labels[i]) * t.width + run[i]] += 1.0;
+        t.rows[labels[i]] += 1.0;
+      }
+  }
+  return tables;
+}
+
 } // namespace
 
 bool
@@ -249,31 +278,12 @@ mergeByConsensus(const std::vector<std::vector<int>>& labelings,
   std::iota(into.begin(), into.end(), 0);
   if (labelings.empty() || count < 2)
     return into;
-  // Per run, the contingency of the consensus parts (rows) with the run's labels: merging two
-  // parts adds their rows, so the co-association of the merged part needs no pass over points.
-  struct Table
-  {
-    int width = 0;
-    std::vector<double> joint, rows;
-  };
-  std::vector<Table> tables(labelings.size());
-  for (std::size_t r = 0; r < labelings.size(); ++r) {
-    const std::vector<int>& run = labelings[r];
-    const std::size_t n = std::min(run.size(), labels.size());
-    Table& t = tables[r];
-    for (std::size_t i = 0; i < n; ++i)
-      t.width = std::max(t.width, run[i] + 1);
-    t.joint.assign(std::size_t(count) * t.width, 0.0);
-    t.rows.assign(count, 0.0);
-    for (std::size_t i = 0; i < n; ++i)
-      if (labels[i] >= 0 && run[i] >= 0) {
-        t.joint[std::size_t(labels[i]) * t.width + run[i]] += 1.0;
-        t.rows[labels[i]] += 1.0;
-      }
-  }
+  // Merging two parts adds their rows, so the co-association of the merged part needs no pass
+  // over points.
+  std::vector<ContingencyTable> tables = contingencyTables(labelings, labels, count);
   auto coAssociation = [&](int p, int q) {
     double sum = 0.0;
-    for (const Table& t : tables) {
+    for (const ContingencyTable& t : tables) {
       if (!(t.rows[p] > 0.0) || !(t.rows[q] > 0.0))
         continue;
       double together = 0.0;
@@ -304,7 +314,7 @@ mergeByConsensus(const std::vector<std::vector<int>>& labelings,
     if (!(best > threshold))
       break;
     const auto [p, q] = pair; // p < q: q goes into p
-    for (Table& t : tables) {
+    for (ContingencyTable& t : tables) {
       for (int l = 0; l < t.width; ++l)
         t.joint[std::size_t(p) * t.width + l] += t.joint[std::size_t(q) * t.width + l];
       t.rows[p] += t.rows[q];
@@ -326,6 +336,46 @@ mergeByConsensus(const std::vector<std::vector<int>>& labelings,
     adjacent.swap(renamed);
   }
   return into;
+}
+
+int
+voteByConsensus(const std::vector<std::vector<int>>& labelings, std::vector<int>& labels)
+{
+  int count = 0;
+  for (int l : labels)
+    count = std::max(count, l + 1);
+  if (labelings.empty() || count < 2)
+    return 0;
+  // The votes are taken against the parts as they were before any point moves, so the result
+  // does not depend on the order of the points.
+  const std::vector<ContingencyTable> tables = contingencyTables(labelings, labels, count);
+  std::vector<int> voted = labels;
+  std::vector<double> score(count);
+  int moved = 0;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i] < 0)
+      continue;
+    std::fill(score.begin(), score.end(), 0.0);
+    for (std::size_t r = 0; r < labelings.size(); ++r) {
+      if (i >= labelings[r].size() || labelings[r][i] < 0)
+        continue;
+      const ContingencyTable& t = tables[r];
+      const int l = labelings[r][i];
+      for (int p = 0; p < count; ++p)
+        if (t.rows[p] > 0.0)
+          score[p] += t.joint[std::size_t(p) * t.width + l] / t.rows[p];
+    }
+    int best = labels[i];
+    for (int p = 0; p < count; ++p)
+      if (score[p] > score[best])
+        best = p;
+    if (best != labels[i]) {
+      voted[i] = best;
+      ++moved;
+    }
+  }
+  labels.swap(voted);
+  return moved;
 }
 
 MedialMeshRunStatus
@@ -415,6 +465,10 @@ segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs
   estimation.setSampleOrderSeed(own_seed);
   result = std::move(done[chosen]);
   result.working_labels = std::move(merged[kept]);
+  // The kept run's boundaries are one run's; each point then joins the part the runs put it with
+  // most often.
+  if (labelings.size() > 1)
+    voteByConsensus(labelings, result.working_labels);
   // A merged label's MAT nodes join those of the label it went into.
   const std::vector<int>& into = merged_into[kept];
   for (std::size_t l = 0; l < into.size() && l < result.label_parts.size(); ++l) {
