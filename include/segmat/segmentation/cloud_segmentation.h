@@ -309,7 +309,8 @@ public:
    * tenths of RI. With the medial mesh, each run thins the samples in another order
    * (CloudMedialMeshEstimation::setSampleOrderSeed) and the run whose working labels agree most
    * with the others' (detail::consensusLabeling: the medoid under the Rand distance) is kept;
-   * a run that fragments the cloud by chance disagrees with all the others. A cloud counts as
+   * a run that fragments the cloud by chance disagrees with all the others. Its boundaries then
+   * move to where the runs agree (detail::voteByConsensus). A cloud counts as
    * noisy when the preprocessing smoothed it (estimated normals, noise above 10 % of the point
    * spacing); clean clouds get one run unless setConsensusForEveryCloudFlag(). Costs one
    * medial step, growing and transfer per run. Noisy psb-dev clouds over three noise draws
