@@ -39,6 +39,7 @@ addStageSeconds(const std::vector<std::pair<std::string, double>>& more,
       mine->second += stage.second;
   }
 }
+
 /// Per run, the contingency of a labeling's parts (rows) with the run's labels (columns).
 struct ContingencyTable
 {
