@@ -14,6 +14,7 @@
  *        [--noise-seeds N] [--first-noise-seed S] [--dump DIR] [--mesh-path] [--no-visibility]
  *        [--eta F] [--omega F]
  *        [--consensus-runs N] [--consensus-merge F] [--noisy-boundary-merge F]
+ *        [--noisy-centres-outside]
  *   PSB_DIR defaults to ../shared/data/psb-dev (off/N.off, seg/Benchmark/N/N_k.seg).
  *   --dump DIR writes DIR/<model>_<a|b|c>.txt: "x y z label truth nx ny nz" per point (the
  *   cloud as segmented, our label, the first human's label, the sample's true normal).
@@ -33,6 +34,9 @@
  *   before the medoid is chosen (CloudSegmentation::setConsensusMergeThreshold; 2: none).
  *   --noisy-boundary-merge F  κ of the long-boundary merge for noisy clouds
  *   (CloudSegmentation::setNoisyBoundaryMergeFactor; 0: off).
+ *   --keep-inside keeps Q-MAT's merged centres inside the surface for every cloud;
+ *   --noisy-centres-outside lets them leave it for noisy clouds too, as before the eighteenth
+ *   pass (CloudSegmentation::setNoisyCentresInsideFlag(false)).
  */
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"
@@ -93,6 +97,7 @@ struct Settings
   int consensus_runs = -1; ///< runs of a noisy cloud (< 0: the library's)
   double consensus_merge = -1.0; ///< merge threshold (< 0: the library's)
   double noisy_boundary = -1.0;  ///< long-boundary merge factor of noisy clouds (< 0: the library's)
+  bool noisy_centres_inside = true; ///< Q-MAT keeps a noisy cloud's merged centres inside
 };
 
 /// The mesh path's face labels scored on \a sampled's points (1 − RI, mean over humans); with
@@ -140,6 +145,7 @@ run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int
     seg.setConsensusMergeThreshold(settings.consensus_merge);
   if (settings.noisy_boundary >= 0.0)
     seg.setNoisyBoundaryMergeFactor(settings.noisy_boundary);
+  seg.setNoisyCentresInsideFlag(settings.noisy_centres_inside);
   if (settings.meso_skeleton)
     seg.setMedialAxis(segmat::CloudMedialAxis::MesoSkeleton);
   if (settings.smoothing >= 0) {
@@ -244,6 +250,8 @@ main(int argc, char** argv)
       settings.consensus_merge = std::stod(argv[++i]);
     else if (arg == "--noisy-boundary-merge" && i + 1 < argc)
       settings.noisy_boundary = std::stod(argv[++i]);
+    else if (arg == "--noisy-centres-outside")
+      settings.noisy_centres_inside = false;
     else if (arg == "--no-visibility")
       settings.visibility = false;
     else if (arg == "--mesh-path")
@@ -257,7 +265,8 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json] "
                    "[--conditions abc] [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] "
-                   "[--reference-crease] [--noise-seeds N] [--first-noise-seed S] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F] [--consensus-runs N] [--consensus-merge F] [--noisy-boundary-merge F]\n";
+                   "[--reference-crease] [--noise-seeds N] [--first-noise-seed S] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F] [--consensus-runs N] [--consensus-merge F] [--noisy-boundary-merge F] "
+                   "[--noisy-centres-outside]\n";
       return 2;
     }
   }

@@ -45,6 +45,8 @@ const char* const kUsage =
     "                     mean co-association above F (default 0.5; above 1: no merging)\n"
     "  --boundary-merge K parts of a noisy cloud that share at least K*sqrt(n) spheres merge\n"
     "                     without the visibility test (default 0.5; 0: off, as in SEG-MAT)\n"
+    "  --noisy-centres-outside  let Q-MAT move a noisy cloud's merged sphere centres out of\n"
+    "                     the surface (faster; by default they are kept inside)\n"
     "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"
     "  --json             print one JSON object: parts, point_counts, seconds per stage\n"
     "                     (summed over the runs), runs [made, kept], origin (what a cloud far\n"
@@ -131,6 +133,8 @@ main(int argc, char** argv)
           throw segmat::Error("option --boundary-merge: the factor must be >= 0");
         segmentation.setNoisyBoundaryMergeFactor(factor);
       }
+      else if (arg == "--noisy-centres-outside")
+        segmentation.setNoisyCentresInsideFlag(false);
       else if (arg == "--runs-always")
         segmentation.setConsensusForEveryCloudFlag(true);
       else if (arg == "--json")

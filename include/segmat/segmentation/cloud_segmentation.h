@@ -360,6 +360,26 @@ public:
     return noisy_boundary_factor_;
   }
 
+  /** \brief For clouds treated as noisy, keep every sphere centre that Q-MAT merges inside the
+   * splat surface (MedialMeshEstimation::setKeepCentresInside; default true; clean clouds never
+   * test, for speed). Noise lets Q-MAT move centres out of a thin plate into the space beside
+   * it; such a plate then keeps a loose scatter of medial nodes where its sheet should be, the
+   * scatter joins the part next to it, and the transfer hands that part the whole plate (a
+   * chair's back with its seat in every one of the nine runs of one noise draw). Costs ~30 % of
+   * the Q-MAT time of a noisy cloud. README, "Eighteenth pass". */
+  void
+  setNoisyCentresInsideFlag(bool flag)
+  {
+    noisy_centres_inside_ = flag;
+  }
+
+  /** \brief Whether Q-MAT keeps the merged centres of a noisy cloud inside its surface. */
+  bool
+  getNoisyCentresInsideFlag() const
+  {
+    return noisy_centres_inside_;
+  }
+
   /** \brief Apply setConsensusRuns() to every cloud, not only to noisy ones (default false;
    * e.g. for noisy scans that come with their own normals, which are not smoothed or measured).
    */
@@ -552,6 +572,7 @@ private:
   double consensus_merge_threshold_ = 0.5;
   bool consensus_every_cloud_ = false;
   double noisy_boundary_factor_ = 0.5;
+  bool noisy_centres_inside_ = true;
   int runs_made_ = 0;
   int run_kept_ = 0;
 

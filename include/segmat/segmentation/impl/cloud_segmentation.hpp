@@ -111,13 +111,20 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
       const bool treat_as_noisy = noisy || consensus_every_cloud_;
       runs_made_ = treat_as_noisy ? consensus_runs_ : 1;
       MatRegionGrowing grower = grower_;
-      if (treat_as_noisy)
+      MedialMeshEstimation& qmat = mesh_estimation_.getMedialMeshEstimation();
+      const bool caller_keeps_inside = qmat.getKeepCentresInside();
+      if (treat_as_noisy) {
         grower.setSharedBoundaryMergeFactor(noisy_boundary_factor_);
+        if (noisy_centres_inside_)
+          qmat.setKeepCentresInside(true);
+      }
       detail::MedialMeshRun run;
       const detail::MedialMeshRunStatus status = detail::segmentWithMedialMesh(
           *working_, runs_made_, consensus_merge_threshold_,
           stats.normals_estimated && fragmented_mat_retry_, params.orientation_k, k_, visibility_,
           params.threads, mesh_estimation_, grower, transfer_, run, run_kept_, stage_seconds_);
+      // The estimation comes back from the kept run: the caller's own setting again.
+      mesh_estimation_.getMedialMeshEstimation().setKeepCentresInside(caller_keeps_inside);
       if (status == detail::MedialMeshRunStatus::Failed) {
         stage_seconds_.clear();
         deinitCompute();
