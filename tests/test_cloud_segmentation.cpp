@@ -660,8 +660,8 @@ TEST(CloudSegmentation, NoisyChairSeatAndBackThatFewerThanHalfTheRunsJoinStayApa
       if (threshold > 0.0)
         seg.setConsensusMergeThreshold(threshold);
       // Measured with the centres free, as before the eighteenth pass: with them kept inside,
-      // most runs of this draw grow the seat and the back into one part (16 841 points, 0.402,
-      // at both thresholds) — the draw NoisyChairBackKeepsItsSheetWhenCentresStayInside does
+      // most runs of this draw join the seat and the back in one part (16 841 points, 0.402,
+      // at both thresholds) — the draw NoisyChairBackIsItsOwnPartWhenCentresStayInside does
       // the other way round.
       seg.setNoisyCentresInsideFlag(false);
     }, parts, &runs);
@@ -683,12 +683,11 @@ TEST(CloudSegmentation, NoisyChairSeatAndBackThatFewerThanHalfTheRunsJoinStayApa
   EXPECT_LT(at_default, at_04 - 0.15);
 }
 
-TEST(CloudSegmentation, NoisyChairBackKeepsItsSheetWhenCentresStayInside)
+TEST(CloudSegmentation, NoisyChairBackIsItsOwnPartWhenCentresStayInside)
 {
-  // PSB chair 101 as bench_cloud_psb's draw of noise seed 7. Without the inside test, in every
-  // one of the nine runs the back (a plate ~6 σ thick) keeps only a loose scatter of medial
-  // nodes around it instead of a sheet; the scatter joins the seat's part and the transfer gives
-  // that part the whole back. Measured over these four humans: centres free, largest part
+  // PSB chair 101 as bench_cloud_psb's draw of noise seed 7. The back is a plate ~6 σ thick
+  // whose medial nodes are a loose scatter; with Q-MAT's centres free, all nine runs give the
+  // back to the seat's part. Measured over these four humans: centres free, largest part
   // 16 791 points (seat and back), 0.397; kept inside 10 966 points (the seat), 0.078. The first
   // human's seat and back: 9 757 and 5 387 points.
   expectCentresInsideSplitTheLargestPart(101, 7, 15000, 12500);
