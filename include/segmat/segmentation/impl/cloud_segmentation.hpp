@@ -124,7 +124,7 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
           stats.normals_estimated && fragmented_mat_retry_, params.orientation_k, k_, visibility_,
           params.threads, mesh_estimation_, grower, transfer_, run, run_kept_, stage_seconds_);
       // The estimation comes back from the kept run: the caller's own setting again.
-      mesh_estimation_.getMedialMeshEstimation().setKeepCentresInside(caller_keeps_inside);
+      qmat.setKeepCentresInside(caller_keeps_inside);
       if (status == detail::MedialMeshRunStatus::Failed) {
         stage_seconds_.clear();
         deinitCompute();
