@@ -340,36 +340,55 @@ mergeByConsensus(const std::vector<std::vector<int>>& labelings,
 }
 
 int
-voteByConsensus(const std::vector<std::vector<int>>& labelings, std::vector<int>& labels)
+voteByConsensus(const std::vector<std::vector<int>>& labelings,
+                const std::vector<std::pair<int, int>>& edges, std::vector<int>& labels)
 {
   int count = 0;
   for (int l : labels)
     count = std::max(count, l + 1);
   if (labelings.empty() || count < 2)
     return 0;
+  const std::size_t n = labels.size();
+  // Candidates of each point: the parts of its neighbours (its own is always one).
+  std::vector<std::vector<int>> candidates(n);
+  for (const auto& [a, b] : edges) {
+    if (a < 0 || b < 0 || std::size_t(std::max(a, b)) >= n || labels[a] < 0 || labels[b] < 0 ||
+        labels[a] == labels[b])
+      continue;
+    candidates[a].push_back(labels[b]);
+    candidates[b].push_back(labels[a]);
+  }
   // The votes are taken against the parts as they were before any point moves, so the result
   // does not depend on the order of the points.
   const std::vector<ContingencyTable> tables = contingencyTables(labelings, labels, count);
   std::vector<int> voted = labels;
-  std::vector<double> score(count);
   int moved = 0;
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    if (labels[i] < 0)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (labels[i] < 0 || candidates[i].empty())
       continue;
-    std::fill(score.begin(), score.end(), 0.0);
-    for (std::size_t r = 0; r < labelings.size(); ++r) {
-      if (i >= labelings[r].size() || labelings[r][i] < 0)
-        continue;
-      const ContingencyTable& t = tables[r];
-      const int l = labelings[r][i];
-      for (int p = 0; p < count; ++p)
-        if (t.rows[p] > 0.0)
-          score[p] += t.joint[std::size_t(p) * t.width + l] / t.rows[p];
-    }
+    std::vector<int>& parts = candidates[i];
+    parts.push_back(labels[i]);
+    std::sort(parts.begin(), parts.end());
+    parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
+    auto score = [&](int p) {
+      double sum = 0.0;
+      for (std::size_t r = 0; r < labelings.size(); ++r) {
+        const ContingencyTable& t = tables[r];
+        if (i >= labelings[r].size() || labelings[r][i] < 0 || !(t.rows[p] > 0.0))
+          continue;
+        sum += t.joint[std::size_t(p) * t.width + labelings[r][i]] / t.rows[p];
+      }
+      return sum;
+    };
     int best = labels[i];
-    for (int p = 0; p < count; ++p)
-      if (score[p] > score[best])
+    double best_score = score(best);
+    for (int p : parts) {
+      const double s = score(p);
+      if (s > best_score) { // a tie keeps the earlier: the point's own part, else the lower
+        best_score = s;
         best = p;
+      }
+    }
     if (best != labels[i]) {
       voted[i] = best;
       ++moved;
@@ -446,17 +465,19 @@ segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs
   // structure, not in where the foam happened to cut.
   std::vector<std::vector<int>> merged = labelings;
   std::vector<std::vector<int>> merged_into(labelings.size());
-  if (labelings.size() > 1 && merge_threshold <= 1.0) {
-    // The parts' adjacency: the transfer's graph of the working points (symmetric k-NN; its
-    // weights are not needed).
+  // The points' adjacency (for the parts' adjacency of the merge and the vote's candidates):
+  // the transfer's graph of the working points (symmetric k-NN; its weights are not needed).
+  std::vector<std::pair<int, int>> edges;
+  if (labelings.size() > 1) {
     pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
     pcl::copyPointCloud(working, *xyz);
     std::vector<int> nodes(xyz->size());
     std::iota(nodes.begin(), nodes.end(), 0);
-    std::vector<std::pair<int, int>> edges;
     for (const PottsEdge& e : computeCloudSmoothnessEdges(xyz, nullptr, nodes, transfer_k, 0.0,
                                                            CreaseModel::Reference, threads))
       edges.emplace_back(e.a, e.b);
+  }
+  if (labelings.size() > 1 && merge_threshold <= 1.0) {
     for (std::size_t r = 0; r < merged.size(); ++r)
       merged_into[r] = mergeByConsensus(labelings, edges, merge_threshold, merged[r]);
   }
@@ -469,7 +490,7 @@ segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs
   // The kept run's boundaries are one run's; each point then joins the part the runs put it with
   // most often.
   if (labelings.size() > 1)
-    voteByConsensus(labelings, result.working_labels);
+    voteByConsensus(labelings, edges, result.working_labels);
   // A merged label's MAT nodes join those of the label it went into.
   const std::vector<int>& into = merged_into[kept];
   for (std::size_t l = 0; l < into.size() && l < result.label_parts.size(); ++l) {
