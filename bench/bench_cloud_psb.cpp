@@ -32,6 +32,8 @@
  *   (CloudSegmentation::setConsensusRuns; 1: a single run as before the consensus).
  *   --consensus-merge F co-association above which each consensus run's adjacent parts merge
  *   before the medoid is chosen (CloudSegmentation::setConsensusMergeThreshold; 2: none).
+ *   --merge-reproduced-cuts lets the kept run's merge join cuts that a third of the runs make
+ *   alike, as before the twentieth pass (setConsensusKeepReproducedCutsFlag(false)).
  *   --noisy-boundary-merge F  κ of the long-boundary merge for noisy clouds
  *   (CloudSegmentation::setNoisyBoundaryMergeFactor; 0: off).
  *   --keep-inside keeps Q-MAT's merged centres inside the surface for every cloud;
@@ -98,6 +100,7 @@ struct Settings
   double consensus_merge = -1.0; ///< merge threshold (< 0: the library's)
   double noisy_boundary = -1.0;  ///< long-boundary merge factor of noisy clouds (< 0: the library's)
   bool noisy_centres_inside = true; ///< Q-MAT keeps a noisy cloud's merged centres inside
+  bool keep_reproduced_cuts = true;  ///< the kept run keeps the cuts a third of the runs make
 };
 
 /// The mesh path's face labels scored on \a sampled's points (1 − RI, mean over humans); with
@@ -146,6 +149,7 @@ run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int
   if (settings.noisy_boundary >= 0.0)
     seg.setNoisyBoundaryMergeFactor(settings.noisy_boundary);
   seg.setNoisyCentresInsideFlag(settings.noisy_centres_inside);
+  seg.setConsensusKeepReproducedCutsFlag(settings.keep_reproduced_cuts);
   if (settings.meso_skeleton)
     seg.setMedialAxis(segmat::CloudMedialAxis::MesoSkeleton);
   if (settings.smoothing >= 0) {
@@ -252,6 +256,8 @@ main(int argc, char** argv)
       settings.noisy_boundary = std::stod(argv[++i]);
     else if (arg == "--noisy-centres-outside")
       settings.noisy_centres_inside = false;
+    else if (arg == "--merge-reproduced-cuts")
+      settings.keep_reproduced_cuts = false;
     else if (arg == "--no-visibility")
       settings.visibility = false;
     else if (arg == "--mesh-path")

@@ -43,6 +43,8 @@ const char* const kUsage =
     "                     1: one run). --runs-always: for every cloud, not only noisy ones\n"
     "  --runs-merge F     merge each run's adjacent parts that the runs join with a\n"
     "                     mean co-association above F (default 0.5; above 1: no merging)\n"
+    "  --runs-merge-reproduced  the kept run's merge may join a cut a third of the runs make\n"
+    "                     alike (by default such cuts are kept)\n"
     "  --boundary-merge K parts of a noisy cloud that share at least K*sqrt(n) spheres merge\n"
     "                     without the visibility test (default 0.5; 0: off, as in SEG-MAT)\n"
     "  --noisy-centres-outside  let Q-MAT move a noisy cloud's merged sphere centres out of\n"
@@ -135,6 +137,8 @@ main(int argc, char** argv)
       }
       else if (arg == "--noisy-centres-outside")
         segmentation.setNoisyCentresInsideFlag(false);
+      else if (arg == "--runs-merge-reproduced")
+        segmentation.setConsensusKeepReproducedCutsFlag(false);
       else if (arg == "--runs-always")
         segmentation.setConsensusForEveryCloudFlag(true);
       else if (arg == "--json")

@@ -270,7 +270,7 @@ consensusLabeling(const std::vector<std::vector<int>>& labelings)
 std::vector<int>
 mergeByConsensus(const std::vector<std::vector<int>>& labelings,
                  const std::vector<std::pair<int, int>>& edges, double threshold,
-                 std::vector<int>& labels)
+                 std::vector<int>& labels, bool keep_reproduced_cuts)
 {
   int count = 0;
   for (int l : labels)
@@ -294,6 +294,29 @@ mergeByConsensus(const std::vector<std::vector<int>>& labelings,
     }
     return sum / double(tables.size());
   };
+  // A run cuts P from Q "alike" when each side is, to kCutPurity, one of its labels and the two
+  // labels differ: the run reproduces the cut, wherever else its own noise cuts fall.
+  constexpr double kCutPurity = 0.8;
+  auto dominant = [](const ContingencyTable& t, int p) {
+    int best = -1;
+    double most = 0.0;
+    for (int l = 0; l < t.width; ++l)
+      if (t.joint[std::size_t(p) * t.width + l] > most) {
+        most = t.joint[std::size_t(p) * t.width + l];
+        best = l;
+      }
+    return most >= kCutPurity * t.rows[p] ? best : -1;
+  };
+  auto reproduced = [&](int p, int q) {
+    int alike = 0;
+    for (const ContingencyTable& t : tables) {
+      if (!(t.rows[p] > 0.0) || !(t.rows[q] > 0.0))
+        continue;
+      const int a = dominant(t, p), b = dominant(t, q);
+      alike += a >= 0 && b >= 0 && a != b;
+    }
+    return 3 * alike >= int(tables.size());
+  };
   std::set<std::pair<int, int>> adjacent;
   for (const auto& [i, j] : edges) {
     if (i < 0 || j < 0 || std::size_t(std::max(i, j)) >= labels.size())
@@ -307,7 +330,7 @@ mergeByConsensus(const std::vector<std::vector<int>>& labelings,
     std::pair<int, int> pair;
     for (const auto& candidate : adjacent) {
       const double c = coAssociation(candidate.first, candidate.second);
-      if (c > best) {
+      if (c > best && !(keep_reproduced_cuts && reproduced(candidate.first, candidate.second))) {
         best = c;
         pair = candidate;
       }
@@ -400,7 +423,7 @@ voteByConsensus(const std::vector<std::vector<int>>& labelings,
 
 MedialMeshRunStatus
 segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs,
-                      double merge_threshold, bool retry, int orientation_k, int transfer_k,
+                      double merge_threshold, bool keep_reproduced_cuts, bool retry, int orientation_k, int transfer_k,
                       bool visibility, unsigned int threads,
                       CloudMedialMeshEstimation& estimation, const MatRegionGrowing& grower,
                       const CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
@@ -486,6 +509,13 @@ segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs
   estimation = std::move(estimations[chosen]);
   estimation.setSampleOrderSeed(own_seed);
   result = std::move(done[chosen]);
+  // The medoid is chosen among the plainly merged runs; the kept run is then merged again
+  // keeping the cuts that a third of the runs reproduce: choosing the medoid with them kept
+  // would favour the runs that miss such a cut, the majority.
+  if (keep_reproduced_cuts && labelings.size() > 1 && merge_threshold <= 1.0) {
+    merged[kept] = labelings[kept];
+    merged_into[kept] = mergeByConsensus(labelings, edges, merge_threshold, merged[kept], true);
+  }
   result.working_labels = std::move(merged[kept]);
   // The kept run's boundaries are one run's; each point then joins the part the runs put it with
   // most often.

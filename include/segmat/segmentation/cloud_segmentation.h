@@ -110,11 +110,16 @@ consensusLabeling(const std::vector<std::vector<int>>& labelings);
  * \param[in] edges point pairs that are neighbours (the adjacency of parts)
  * \param[in,out] labels the labeling to merge (one of the runs'); a merged part takes the lower
  * label
+ * \param[in] keep_reproduced_cuts when true, a pair that at least a third of \a labelings cut
+ * alike (each side at least 80 % one label of the run, the two labels different) is never
+ * merged, however often the other runs join it: a real boundary that the noise lets only some
+ * runs find (the seat and back of a noisy chair, PSB 101) is reproduced where it is found,
+ * while a noise cut falls somewhere else in each run
  * \return per label of the input \a labels, the label it ended in */
 std::vector<int>
 mergeByConsensus(const std::vector<std::vector<int>>& labelings,
                  const std::vector<std::pair<int, int>>& edges, double threshold,
-                 std::vector<int>& labels);
+                 std::vector<int>& labels, bool keep_reproduced_cuts = false);
 
 /** \brief Moves each point of \a labels to the part the runs put it with most often, among its
  * own part and the parts of its neighbours: the part P with the highest
@@ -160,7 +165,9 @@ enum class MedialMeshRunStatus
  * Voronoi samples thinned in different orders (run r: sample order seed = \a estimation's + r,
  * so run 0 is the plain pipeline). Each run's working labels are merged by mergeByConsensus()
  * over all the runs (above \a merge_threshold; > 1: no merging), the consensusLabeling() of
- * the merged labelings is kept, and its points are moved by voteByConsensus().
+ * the merged labelings is kept (when \a keep_reproduced_cuts, merged again from its own labels
+ * keeping the cuts a third of the runs reproduce), and its points are moved by
+ * voteByConsensus().
  * Each run works on its own copies of \a working and of the three stages; up to \a threads
  * runs go side by side (0: OpenMP's choice; the result does not depend on it). Stage seconds are summed over the
  * runs. Run 0 decides the outcome; a later run that fails is left out. \a estimation ends up
@@ -168,7 +175,7 @@ enum class MedialMeshRunStatus
  * \param[out] chosen the run kept */
 MedialMeshRunStatus
 segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs,
-                      double merge_threshold, bool retry, int orientation_k, int transfer_k,
+                      double merge_threshold, bool keep_reproduced_cuts, bool retry, int orientation_k, int transfer_k,
                       bool visibility, unsigned int threads,
                       CloudMedialMeshEstimation& estimation, const MatRegionGrowing& grower,
                       const CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
@@ -349,6 +356,26 @@ public:
   getConsensusMergeThreshold() const
   {
     return consensus_merge_threshold_;
+  }
+
+  /** \brief When the kept consensus run is merged, keep apart every pair of its parts that at
+   * least a third of the runs cut alike (default true; detail::mergeByConsensus). Noise hides
+   * some real boundaries from most runs: a noisy chair's seat and back that five of nine runs
+   * grow into one part are then joined by the merge, though the other four cut them in the
+   * same place — a noise cut falls somewhere else in each run. The medoid is still chosen among
+   * the plainly merged runs (with such cuts kept, the majority that misses them would look
+   * closer to the others). Noisy psb-dev clouds (README, "Twentieth pass"): see there. */
+  void
+  setConsensusKeepReproducedCutsFlag(bool flag)
+  {
+    consensus_keep_reproduced_cuts_ = flag;
+  }
+
+  /** \brief Whether the kept consensus run keeps the cuts a third of the runs reproduce. */
+  bool
+  getConsensusKeepReproducedCutsFlag() const
+  {
+    return consensus_keep_reproduced_cuts_;
   }
 
   /** \brief κ of MatRegionGrowing::setSharedBoundaryMergeFactor() for clouds treated as noisy
@@ -578,6 +605,7 @@ private:
   bool fragmented_mat_retry_ = true;
   int consensus_runs_ = 9;
   double consensus_merge_threshold_ = 0.5;
+  bool consensus_keep_reproduced_cuts_ = true;
   bool consensus_every_cloud_ = false;
   double noisy_boundary_factor_ = 0.5;
   bool noisy_centres_inside_ = true;

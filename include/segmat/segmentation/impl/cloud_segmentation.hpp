@@ -120,7 +120,7 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
       }
       detail::MedialMeshRun run;
       const detail::MedialMeshRunStatus status = detail::segmentWithMedialMesh(
-          *working_, runs_made_, consensus_merge_threshold_,
+          *working_, runs_made_, consensus_merge_threshold_, consensus_keep_reproduced_cuts_,
           stats.normals_estimated && fragmented_mat_retry_, params.orientation_k, k_, visibility_,
           params.threads, mesh_estimation_, grower, transfer_, run, run_kept_, stage_seconds_);
       // The estimation comes back from the kept run: the caller's own setting again.
