@@ -360,11 +360,12 @@ public:
 
   /** \brief When the kept consensus run is merged, keep apart every pair of its parts that at
    * least a third of the runs cut alike (default true; detail::mergeByConsensus). Noise hides
-   * some real boundaries from most runs: a noisy chair's seat and back that five of nine runs
-   * grow into one part are then joined by the merge, though the other four cut them in the
-   * same place — a noise cut falls somewhere else in each run. The medoid is still chosen among
+   * some real boundaries from most runs: a noisy chair's seat and back that most of nine runs
+   * grow into one part are then joined by the merge, though the runs that cut them cut them
+   * in the same place — a noise cut falls somewhere else in each run. The medoid is still chosen among
    * the plainly merged runs (with such cuts kept, the majority that misses them would look
-   * closer to the others). Noisy psb-dev clouds (README, "Twentieth pass"): see there. */
+   * closer to the others). Noisy psb-dev clouds (README, "Twentieth pass"): 1 − RI
+   * 0.1280 → 0.1265 over twelve noise draws, 0.1331 → 0.1298 over the three held out. */
   void
   setConsensusKeepReproducedCutsFlag(bool flag)
   {
