@@ -372,7 +372,7 @@ voteByConsensus(const std::vector<std::vector<int>>& labelings,
   if (labelings.empty() || count < 2)
     return 0;
   const std::size_t n = labels.size();
-  // Candidates of each point: the parts of its neighbours (its own is always one).
+  // Candidates of each point besides its own part: the parts of its neighbours.
   std::vector<std::vector<int>> candidates(n);
   for (const auto& [a, b] : edges) {
     if (a < 0 || b < 0 || std::size_t(std::max(a, b)) >= n || labels[a] < 0 || labels[b] < 0 ||
@@ -390,7 +390,6 @@ voteByConsensus(const std::vector<std::vector<int>>& labelings,
     if (labels[i] < 0 || candidates[i].empty())
       continue;
     std::vector<int>& parts = candidates[i];
-    parts.push_back(labels[i]);
     std::sort(parts.begin(), parts.end());
     parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
     auto score = [&](int p) {
@@ -406,8 +405,10 @@ voteByConsensus(const std::vector<std::vector<int>>& labelings,
     int best = labels[i];
     double best_score = score(best);
     for (int p : parts) {
+      if (p == labels[i])
+        continue;
       const double s = score(p);
-      if (s > best_score) { // a tie keeps the earlier: the point's own part, else the lower
+      if (s > best_score) { // a tie keeps the point's own part, else the lower
         best_score = s;
         best = p;
       }
@@ -423,8 +424,8 @@ voteByConsensus(const std::vector<std::vector<int>>& labelings,
 
 MedialMeshRunStatus
 segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs,
-                      double merge_threshold, bool keep_reproduced_cuts, bool retry, int orientation_k, int transfer_k,
-                      bool visibility, unsigned int threads,
+                      double merge_threshold, bool keep_reproduced_cuts, bool retry,
+                      int orientation_k, int transfer_k, bool visibility, unsigned int threads,
                       CloudMedialMeshEstimation& estimation, const MatRegionGrowing& grower,
                       const CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
                       std::vector<std::pair<std::string, double>>& stage_seconds)
@@ -510,8 +511,8 @@ segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs
   estimation.setSampleOrderSeed(own_seed);
   result = std::move(done[chosen]);
   // The medoid is chosen among the plainly merged runs; the kept run is then merged again
-  // keeping the cuts that a third of the runs reproduce: choosing the medoid with them kept
-  // would favour the runs that miss such a cut, the majority.
+  // keeping the cuts that a third of the runs reproduce (with them kept before the choice, the
+  // majority of runs that miss such a cut would tend to be the closer to each other).
   if (keep_reproduced_cuts && labelings.size() > 1 && merge_threshold <= 1.0) {
     merged[kept] = labelings[kept];
     merged_into[kept] = mergeByConsensus(labelings, edges, merge_threshold, merged[kept], true);

@@ -175,8 +175,8 @@ enum class MedialMeshRunStatus
  * \param[out] chosen the run kept */
 MedialMeshRunStatus
 segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs,
-                      double merge_threshold, bool keep_reproduced_cuts, bool retry, int orientation_k, int transfer_k,
-                      bool visibility, unsigned int threads,
+                      double merge_threshold, bool keep_reproduced_cuts, bool retry,
+                      int orientation_k, int transfer_k, bool visibility, unsigned int threads,
                       CloudMedialMeshEstimation& estimation, const MatRegionGrowing& grower,
                       const CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
                       std::vector<std::pair<std::string, double>>& stage_seconds);
@@ -362,10 +362,11 @@ public:
    * least a third of the runs cut alike (default true; detail::mergeByConsensus). Noise hides
    * some real boundaries from most runs: a noisy chair's seat and back that most of nine runs
    * grow into one part are then joined by the merge, though the runs that cut them cut them
-   * in the same place — a noise cut falls somewhere else in each run. The medoid is still chosen among
-   * the plainly merged runs (with such cuts kept, the majority that misses them would look
-   * closer to the others). Noisy psb-dev clouds (README, "Twentieth pass"): 1 − RI
-   * 0.1280 → 0.1265 over twelve noise draws, 0.1331 → 0.1298 over the three held out. */
+   * in the same place — a noise cut falls somewhere else in each run. The medoid is still
+   * chosen among the plainly merged runs (with such cuts kept there, the majority that misses
+   * them would tend to look closer to each other; not measured). Noisy psb-dev clouds
+   * (README, "Twentieth pass"): 1 − RI 0.1280 → 0.1265 over twelve noise draws, 0.1331 →
+   * 0.1298 over the three held out. */
   void
   setConsensusKeepReproducedCutsFlag(bool flag)
   {
