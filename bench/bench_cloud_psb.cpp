@@ -11,7 +11,7 @@
  *
  * Usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6,...] [--json] [--conditions abc]
  *        [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] [--reference-crease]
- *        [--noise-seeds N] [--first-noise-seed S] [--dump DIR] [--mesh-path] [--no-visibility]
+ *        [--noise-seeds N] [--first-noise-seed S] [--dump DIR] [--no-visibility]
  *        [--eta F] [--omega F]
  *        [--consensus-runs N] [--consensus-merge F] [--noisy-boundary-merge F]
  *        [--noisy-centres-outside]
@@ -21,10 +21,6 @@
  *   --noise-seeds N scores condition (c) as the mean over N noise draws (default 1): one noisy
  *   cloud's parts change with the draw by tenths of RI per model. --first-noise-seed S draws
  *   with seeds S, S + 1, ... instead of 2, 3, ... (held-out draws for a setting chosen on those).
- *   --mesh-path also segments each mesh with the mesh path (MeshSegmentation, defaults), clean
- *   and with its vertices moved by the same Gaussian noise (0.5 % of the diagonal, the same seeds
- *   and number of draws), and scores its face labels on the same clean points through their
- *   source faces: what noise costs the method itself, not the cloud path.
  *   --no-visibility merges parts without the ball-union visibility test (setVisibilityFlag).
  *   --eta F / --omega F set the minimal region fraction η / the transfer smoothness ω
  *   (setMinRegionFraction / setSmoothnessWeight; defaults: the library's).
@@ -47,7 +43,6 @@
 #include <segmat/io/off.h>
 #include <segmat/io/seg.h>
 #include <segmat/segmentation/cloud_segmentation.h>
-#include <segmat/segmentation/mesh_segmentation.h>
 
 #include <pcl/console/print.h>
 
@@ -92,7 +87,6 @@ struct Settings
   int noise_seeds = 1;  ///< condition (c): noise draws averaged
   int first_noise_seed = 2; ///< condition (c): seed of the first draw
   std::string dump_dir; ///< when set: one point file per model and condition (see Usage)
-  bool mesh_path = false; ///< also score the mesh path, clean and with noisy vertices
   bool visibility = true; ///< merging tests visibility in the ball union
   double eta = -1.0;      ///< minimal region fraction η (< 0: the library's)
   double omega = -1.0;    ///< transfer smoothness ω (< 0: the library's)
@@ -102,32 +96,6 @@ struct Settings
   bool noisy_centres_inside = true; ///< Q-MAT keeps a noisy cloud's merged centres inside
   bool keep_reproduced_cuts = true;  ///< the kept run keeps the cuts a third of the runs make
 };
-
-/// The mesh path's face labels scored on \a sampled's points (1 − RI, mean over humans); with
-/// \a noise_seed > 0 the mesh's vertices first move by Gaussian noise of 0.5 % of its diagonal.
-Result
-runMeshPath(const segmat::TriangleMesh& mesh, const SampledCloud& sampled,
-            const std::vector<std::vector<int>>& truths, std::uint32_t noise_seed)
-{
-  auto input = std::make_shared<segmat::TriangleMesh>(mesh);
-  if (noise_seed > 0)
-    segmat::test::addGaussianNoise(*input, 0.005, noise_seed);
-  segmat::MeshSegmentation seg;
-  seg.setInputMesh(input);
-  seg.setNumberOfThreads(1);
-  std::vector<int> face_labels;
-  const auto start = std::chrono::steady_clock::now();
-  const bool ok = seg.segment(face_labels);
-  Result r;
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!ok)
-    face_labels.assign(mesh.numFaces(), 0);
-  r.parts = int(std::set<int>(face_labels.begin(), face_labels.end()).size());
-  const std::vector<int> labels = sampled.pointLabels(face_labels);
-  for (const auto& truth : truths)
-    r.ri += randIndexError(labels, truth) / double(truths.size());
-  return r;
-}
 
 Result
 run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int>>& truths,
@@ -260,8 +228,6 @@ main(int argc, char** argv)
       settings.keep_reproduced_cuts = false;
     else if (arg == "--no-visibility")
       settings.visibility = false;
-    else if (arg == "--mesh-path")
-      settings.mesh_path = true;
     else if (arg == "--dump" && i + 1 < argc)
       settings.dump_dir = argv[++i];
     else if (arg == "--conditions" && i + 1 < argc)
@@ -271,7 +237,7 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json] "
                    "[--conditions abc] [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] "
-                   "[--reference-crease] [--noise-seeds N] [--first-noise-seed S] [--dump DIR] [--mesh-path] [--no-visibility] [--eta F] [--omega F] [--consensus-runs N] [--consensus-merge F] [--noisy-boundary-merge F] "
+                   "[--reference-crease] [--noise-seeds N] [--first-noise-seed S] [--dump DIR] [--no-visibility] [--eta F] [--omega F] [--consensus-runs N] [--consensus-merge F] [--noisy-boundary-merge F] "
                    "[--noisy-centres-outside]\n";
       return 2;
     }
@@ -294,8 +260,6 @@ main(int argc, char** argv)
   std::map<int, std::vector<std::vector<Result>>> by_category; // category → condition → results
   std::ostringstream rows;
   std::vector<std::vector<Result>> all(3);
-  std::ostringstream mesh_rows;          // --mesh-path: model, clean, noisy
-  std::vector<Result> mesh_clean, mesh_noisy;
   try {
     for (int id : models) {
       const std::string stem = std::to_string(id);
@@ -332,25 +296,6 @@ main(int argc, char** argv)
       }
       if (!json)
         std::cerr << line;
-      if (settings.mesh_path) {
-        const Result clean_mesh = runMeshPath(mesh, clean, truths, 0);
-        Result noisy_mesh;
-        for (int k = 0; k < settings.noise_seeds; ++k) {
-          const Result once = runMeshPath(mesh, clean, truths, std::uint32_t(2 + k));
-          noisy_mesh.ri += once.ri / settings.noise_seeds;
-          noisy_mesh.parts += once.parts;
-          noisy_mesh.seconds += once.seconds / settings.noise_seeds;
-        }
-        noisy_mesh.parts = (noisy_mesh.parts + settings.noise_seeds / 2) / settings.noise_seeds;
-        mesh_clean.push_back(clean_mesh);
-        mesh_noisy.push_back(noisy_mesh);
-        std::snprintf(line, sizeof line, "| %d | %s | %.4f | %.4f | %d/%d |\n", id,
-                      kCategories[category], clean_mesh.ri, noisy_mesh.ri, clean_mesh.parts,
-                      noisy_mesh.parts);
-        mesh_rows << line;
-        if (!json)
-          std::cerr << "mesh path " << line;
-      }
     }
   }
   catch (const segmat::Error& e) {
@@ -393,15 +338,6 @@ main(int argc, char** argv)
                 mean(kv.second[0], ri), mean(kv.second[1], ri), mean(kv.second[2], ri));
   std::printf("| **all** | %zu | **%.4f** | **%.4f** | **%.4f** |\n", all[0].size(),
               mean(all[0], ri), mean(all[1], ri), mean(all[2], ri));
-  if (settings.mesh_path) {
-    std::cout << "\nMesh path on the same points (face labels through the source faces)\n\n"
-              << "| model | category | RI mesh | RI mesh, noisy vertices | parts clean/noisy |\n"
-                 "|---|---|---|---|---|\n"
-              << mesh_rows.str();
-    std::printf("| **all** | %zu | **%.4f** | **%.4f** | %.1f/%.1f |\n", mesh_clean.size(),
-                mean(mesh_clean, ri), mean(mesh_noisy, ri), mean(mesh_clean, nparts),
-                mean(mesh_noisy, nparts));
-  }
   std::printf("\nmean parts a/b/c: %.1f / %.1f / %.1f; mean seconds a/b/c: %.2f / %.2f / %.2f\n",
               mean(all[0], nparts), mean(all[1], nparts), mean(all[2], nparts), mean(all[0], secs),
               mean(all[1], secs), mean(all[2], secs));

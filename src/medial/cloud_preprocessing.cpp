@@ -9,6 +9,7 @@
 #include "../common/point_kd_tree.h"
 #include "../common/thread_count.h"
 #include "local_fit.h"
+#include "surface_denoising.h"
 
 #include <pcl/console/print.h>
 #include <pcl/features/normal_3d.h>
@@ -21,6 +22,9 @@
 
 namespace segmat {
 namespace {
+
+using detail::forEachNeighbourhood;
+using detail::median;
 
 bool
 finitePoint(const pcl::PointNormal& p)
@@ -76,151 +80,6 @@ dropExactDuplicates(const pcl::PointCloud<pcl::PointNormal>& cloud, std::vector<
                   indices.end());
 }
 
-/// Where point \a self lies on its own side of the surface: a quadratic height field over the
-/// neighbourhood's PCA tangent plane, fitted with spatial weights exp(−d²/support²) times
-/// Gaussian weights (bandwidth \a band) on each neighbour's residual, refitted a few times
-/// from the plane through the point itself. The residual weights are what keep the two sides of
-/// a thin wall apart: a plain fit over neighbours from both sides lands in the middle of the
-/// wall and flattens the wall into one sheet (the winding number then sees no volume there).
-Eigen::Vector3f
-sidedHeightFit(const std::vector<Eigen::Vector3f>& points, int self, const pcl::Indices& nn,
-               const std::vector<float>& d2, double support, double band)
-{
-  const auto pca = detail::neighbourhoodPca(points, nn);
-  const Eigen::Vector3d n = pca.eigenvectors().col(0), e1 = pca.eigenvectors().col(1),
-                        e2 = pca.eigenvectors().col(2);
-  const Eigen::Vector3d origin = points[self].cast<double>();
-  const std::size_t m = nn.size();
-  std::vector<Eigen::Matrix<double, 6, 1>> basis(m);
-  std::vector<double> height(m), spatial(m);
-  for (std::size_t a = 0; a < m; ++a) {
-    const Eigen::Vector3d d = points[nn[a]].cast<double>() - origin;
-    const double u = d.dot(e1) / support, v = d.dot(e2) / support; // unit-free: well posed
-    basis[a] << 1.0, u, v, u * u, u * v, v * v;
-    height[a] = d.dot(n);
-    spatial[a] = std::exp(-double(d2[a]) / (support * support));
-  }
-  // From the plane through the point, with a wide residual band that narrows: a narrow band at
-  // once would leave too few neighbours on a curved surface to fix six coefficients. A small
-  // ridge on the curvature terms keeps the fit posed where few neighbours remain.
-  Eigen::Matrix<double, 6, 1> coef = Eigen::Matrix<double, 6, 1>::Zero();
-  const double bands[] = {4.0 * band, 2.0 * band, band, band};
-  for (const double b : bands) {
-    const double inv_band2 = 1.0 / (2.0 * b * b);
-    Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
-    Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-    double total = 0.0;
-    for (std::size_t a = 0; a < m; ++a) {
-      const double r = height[a] - basis[a].dot(coef);
-      const double w = spatial[a] * std::exp(-r * r * inv_band2);
-      normal += w * basis[a] * basis[a].transpose();
-      rhs += w * height[a] * basis[a];
-      total += w;
-    }
-    if (!(total > 1e-6))
-      break;
-    for (int c = 3; c < 6; ++c)
-      normal(c, c) += 1e-3 * total;
-    const Eigen::Matrix<double, 6, 1> next = normal.ldlt().solve(rhs);
-    if (!next.allFinite())
-      break;
-    coef = next;
-  }
-  return (origin + coef[0] * n).cast<float>();
-}
-
-double
-median(std::vector<float> values)
-{
-  if (values.empty())
-    return 0.0;
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return double(values[values.size() / 2]);
-}
-
-/// Calls visit(s, i, nn, d2) for i = s · stride (s = 0, 1, ...) with the \a k nearest neighbours
-/// of point i of the tree's cloud (i itself first), on \a threads threads. Each s is visited
-/// once, so what visit writes to slot s does not depend on the thread count.
-template <typename Visit>
-void
-forEachNeighbourhood(const detail::PointKdTree& tree, int k, int stride, int threads,
-                     Visit visit)
-{
-  const auto& cloud = *tree.getInputCloud();
-  const int count = (static_cast<int>(cloud.size()) + stride - 1) / stride;
-#pragma omp parallel num_threads(threads)
-  {
-    pcl::Indices nn;
-    std::vector<float> d2;
-#pragma omp for schedule(static)
-    for (int s = 0; s < count; ++s)
-      if (tree.nearestKSearch(cloud[s * stride], k, nn, d2) > 0)
-        visit(s, s * stride, nn, d2);
-  }
-}
-
-/// The cloud's noise and spacing, from every \a stride-th point: the median offset of a point
-/// from the PCA plane of its 8 nearest neighbours (near enough to stay on its side of a thin
-/// wall; a wider PCA would measure the wall's thickness), scaled to a Gaussian σ (÷ 0.6745),
-/// and the median distance to the nearest neighbour.
-std::pair<double, double>
-noiseAndSpacing(const std::vector<Eigen::Vector3f>& positions,
-                const detail::PointKdTree& tree, int stride, int threads)
-{
-  const int n = static_cast<int>(positions.size());
-  const int count = (n + stride - 1) / stride;
-  std::vector<float> noise(count, 0.0f), spacing(count, 0.0f);
-  forEachNeighbourhood(tree, std::min(8, n), stride, threads,
-                       [&](int s, int i, const pcl::Indices& near, const std::vector<float>& d2) {
-                         if (near.size() < 4)
-                           return;
-                         const auto pca = detail::neighbourhoodPca(positions, near);
-                         Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-                         for (int j : near)
-                           mean += positions[j].cast<double>();
-                         mean /= double(near.size());
-                         noise[s] = float(std::abs((positions[i].cast<double>() - mean)
-                                                       .dot(pca.eigenvectors().col(0))));
-                         spacing[s] = std::sqrt(d2[1]); // [0] is the point itself
-                       });
-  return {median(noise) / 0.6745, median(spacing)};
-}
-
-/// One pass of sided quadratic (MLS-like) smoothing: every point moves onto the height field
-/// of its own side fitted to its k nearest neighbours (sidedHeightFit). A plane fit would
-/// pull thin tubes inwards by about a²/(4R) (a the neighbourhood's size); a quadratic does not.
-/// The residual bandwidth is 1.5 × the cloud's noise (noiseAndSpacing, floored at a tenth of the
-/// spacing). Nothing moves when that noise is below \a min_noise_ratio × the spacing.
-/// Returns the median move divided by the median spacing (0 when nothing moved).
-double
-smoothSurface(std::vector<Eigen::Vector3f>& positions, int k, int threads, double min_noise_ratio)
-{
-  const int n = static_cast<int>(positions.size());
-  if (n < 6)
-    return 0.0;
-  const auto cloud = detail::toXYZ(positions);
-  detail::PointKdTree tree;
-  tree.setInputCloud(cloud);
-  // A quarter of the points tells the noise as well as all of them, at a quarter of the cost
-  // that a clean cloud pays for finding out it is clean.
-  const auto [noise, spacing] = noiseAndSpacing(positions, tree, 4, threads);
-  const double band = std::max(1.5 * noise, 0.1 * spacing);
-  if (!(spacing > 0.0) || noise < min_noise_ratio * spacing)
-    return 0.0;
-  const int kk = std::min(k, n);
-  std::vector<Eigen::Vector3f> moved(positions);
-  std::vector<float> moves(n, 0.0f);
-  forEachNeighbourhood(tree, kk, 1, threads,
-                       [&](int, int i, const pcl::Indices& nn, const std::vector<float>& d2) {
-                         if (nn.size() < 6 || !(d2.back() > 0.0f))
-                           return;
-                         moved[i] = sidedHeightFit(positions, i, nn, d2,
-                                                   std::sqrt(double(d2.back())), band);
-                         moves[i] = (moved[i] - positions[i]).norm();
-                       });
-  positions.swap(moved);
-  return median(moves) / spacing;
-}
 
 /// Removes from \a indices the points standing apart from the surface (scanner outliers: flying
 /// pixels, dust): those whose mean distance to their 8 nearest neighbours exceeds 4 times the
@@ -344,6 +203,7 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
   input_to_working_.clear();
   normals_estimated_ = false;
   smoothing_passes_ = 0;
+  noise_sigma_ = spacing_ = 0.0;
   if (!input_ || input_->empty()) {
     PCL_ERROR("[segmat::CloudPreprocessing::compute] No input cloud, or it is empty.\n");
     return false;
@@ -417,18 +277,11 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
     std::vector<Eigen::Vector3f> positions(cloud.size());
     for (std::size_t i = 0; i < cloud.size(); ++i)
       positions[i] = cloud[i].getVector3fMap();
-    // A clean sample is left as it is (its offsets from the local planes are 2–4 % of the
-    // spacing; a scan with noise shows 30 % and more); a noisy one gets passes while they
-    // still move points by a noticeable part of the spacing.
-    constexpr double kNoisyRatio = 0.1, kStillRatio = 0.05;
-    for (int it = 0; it < smoothing_iterations_; ++it) {
-      const double moved =
-          smoothSurface(positions, 2 * normal_k_, threads, it == 0 ? kNoisyRatio : 0.0);
-      if (moved > 0.0)
-        ++smoothing_passes_;
-      if (moved < kStillRatio)
-        break;
-    }
+    const detail::SurfaceDenoising denoising =
+        detail::denoiseCloudSurface(positions, 2 * normal_k_, smoothing_iterations_, threads);
+    smoothing_passes_ = denoising.passes;
+    noise_sigma_ = denoising.noise.sigma;
+    spacing_ = denoising.noise.spacing;
     for (std::size_t i = 0; i < cloud.size(); ++i)
       cloud[i].getVector3fMap() = positions[i];
     // PCL's PCA normal and viewpoint flip (as NormalEstimationOMP computes them, same answers),

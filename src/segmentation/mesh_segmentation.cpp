@@ -5,6 +5,9 @@
 #include <segmat/segmentation/mesh_segmentation.h>
 #include <segmat/medial/medial_mesh_estimation.h>
 
+#include "../common/thread_count.h"
+#include "../medial/surface_denoising.h"
+
 #include <pcl/console/print.h>
 
 #include <algorithm>
@@ -53,8 +56,30 @@ MeshSegmentation::setInputMesh(const TriangleMesh::ConstPtr& mesh)
   if (mesh != mesh_)
     dropComputedMats(); // they belong to the previous mesh
   mesh_ = mesh;
+  working_mesh_.reset();
   surface_tree_.reset();
   transfer_.setInputMesh(mesh); // drops the transfer's face-graph weights
+}
+
+void
+MeshSegmentation::prepareWorkingMesh()
+{
+  if (working_mesh_)
+    return;
+  // The mesh's vertices are samples of its surface: the cloud path's noise design serves them,
+  // with the mesh's rings as neighbourhoods. A clean mesh is left as it is (bit for bit).
+  auto denoised = std::make_shared<TriangleMesh>(*mesh_);
+  const detail::SurfaceDenoising denoising =
+      detail::denoiseMeshSurface(denoised->vertices, mesh_->faces, 32, 5,
+                                 detail::threadCount(getNumberOfThreads()), 4.0);
+  noise_sigma_ = denoising.noise.sigma;
+  denoising_passes_ = denoising.passes;
+  if (denoising.passes == 0) {
+    working_mesh_ = mesh_;
+    return;
+  }
+  working_mesh_ = denoised;
+  transfer_.setInputMesh(working_mesh_);
 }
 
 void
@@ -135,15 +160,22 @@ MeshSegmentation::segment(std::vector<int>& face_labels)
 
   StageClock clock;
   double seconds = 0.0;
+  if (!working_mesh_) {
+    prepareWorkingMesh();
+    seconds = clock.lap();
+  }
+  stage_seconds_.emplace_back("denoise", seconds);
+  seconds = 0.0;
   if (!base_) {
     auto base = std::make_shared<MedialMesh>();
     auto structured = std::make_shared<MedialMesh>();
-    estimation_->setInputMesh(mesh_);
+    estimation_->setInputMesh(working_mesh_);
     const bool ok = estimation_->compute(*base, *structured);
     estimation_->setInputMesh(nullptr); // hold the mesh only through mesh_
     if (!ok) {
       PCL_ERROR("[segmat::MeshSegmentation::segment] the medial meshes could not be computed "
                 "from the mesh (see the message above).\n");
+      stage_seconds_.clear();
       return false;
     }
     base_ = base;
@@ -197,7 +229,7 @@ MeshSegmentation::segment(std::vector<int>& face_labels)
   seconds = 0.0;
   clock.lap();
   if (!surface_tree_) {
-    surface_tree_ = std::make_shared<AabbTree>(*mesh_);
+    surface_tree_ = std::make_shared<AabbTree>(*working_mesh_);
     // Two points see each other when the segment between them crosses no face (§4.4).
     const std::shared_ptr<const AabbTree> tree = surface_tree_;
     grower_.setSegmentVisibility([tree](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {

@@ -186,6 +186,22 @@ public:
     return smoothing_passes_;
   }
 
+  /** \brief The noise the last compute() estimated in the working cloud (Gaussian σ of the
+   * points' offsets from their local surface, in the cloud's units); 0 when the normals were
+   * used (nothing is smoothed then). */
+  double
+  getEstimatedNoise() const
+  {
+    return noise_sigma_;
+  }
+
+  /** \brief Median nearest-neighbour distance of the working cloud, from the same estimate. */
+  double
+  getEstimatedSpacing() const
+  {
+    return spacing_;
+  }
+
 private:
   PointCloudIn::ConstPtr input_;
   std::size_t working_size_;
@@ -198,6 +214,8 @@ private:
   std::vector<int> input_to_working_;
   bool normals_estimated_ = false;
   int smoothing_passes_ = 0;
+  double noise_sigma_ = 0.0;
+  double spacing_ = 0.0;
 };
 
 } // namespace segmat

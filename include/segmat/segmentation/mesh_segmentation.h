@@ -28,6 +28,10 @@ class MedialMeshEstimation;
  * 3D Shape Segmentation Using Medial Axis Transform", IEEE TVCG 2022).
  *
  * Stages, each timed (getStageSeconds()):
+ *  -. "denoise": the mesh's noise is estimated; a noisy mesh (scanner noise on its vertices)
+ *     is smoothed until its triangles turn as little as a clean triangulation's, and every later
+ *     stage works on that copy (getWorkingMesh()). The faces, and so the labels, are the
+ *     input's. A clean mesh is used as it is. No parameter: see docs/noise.md.
  *  0. "mat": the base and structured medial meshes from the mesh (MedialMeshEstimation: Voronoi
  *     MAT + Q-MAT, §3), only when none was given (setBaseMat / setStructuredMat);
  *  1. "graph": the base-MAT graph (MatGraph::fromMedialMesh, §4.1);
@@ -155,12 +159,35 @@ public:
   bool
   segment(std::vector<int>& face_labels);
 
+  /** \brief The mesh the stages worked on: the input, or its denoised copy (same faces). Null
+   * before segment(). */
+  TriangleMesh::ConstPtr
+  getWorkingMesh() const
+  {
+    return working_mesh_;
+  }
+
+  /** \brief The noise the last segment() estimated on the input's surface: the Gaussian σ of
+   * its vertices' offsets from the surface their neighbours describe, in the mesh's units. */
+  double
+  getEstimatedNoise() const
+  {
+    return noise_sigma_;
+  }
+
+  /** \brief Smoothing passes the last segment() applied: 0 for a mesh found clean. */
+  int
+  getDenoisingPasses() const
+  {
+    return denoising_passes_;
+  }
+
   /** \brief Faces of each part of the last segment(), in label order (indices ascending). */
   void
   getParts(std::vector<pcl::PointIndices>& parts) const;
 
-  /** \brief Seconds spent in each stage by the last segment(), in pipeline order ("mat",
-   * "graph", "tags", "surface_tree", "grow_merge", "transfer"); a stage whose result was reused reports 0.
+  /** \brief Seconds spent in each stage by the last segment(), in pipeline order ("denoise",
+   * "mat", "graph", "tags", "surface_tree", "grow_merge", "transfer"); a stage whose result was reused reports 0.
    */
   const std::vector<std::pair<std::string, double>>&
   getStageSeconds() const
@@ -185,11 +212,19 @@ public:
   }
 
 private:
+  /** \brief Makes working_mesh_ (the input, or its denoised copy) when it is missing. */
+  void
+  prepareWorkingMesh();
+
   /** \brief Forgets base_ and structured_ (and what depends on them) if segment() computed them. */
   void
   dropComputedMats();
 
   TriangleMesh::ConstPtr mesh_;
+  // The mesh every stage works on: the input, or its denoised copy when the input is noisy.
+  TriangleMesh::ConstPtr working_mesh_;
+  double noise_sigma_ = 0.0;
+  int denoising_passes_ = 0;
   MedialMesh::ConstPtr base_;
   MedialMesh::ConstPtr structured_;
   // Computes base_ and structured_ when neither was given; mats_computed_ says they are its.

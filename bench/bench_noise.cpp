@@ -1,0 +1,234 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ *
+ * bench_noise: segmentation quality and time under Gaussian noise, for meshes and for clouds.
+ *
+ * Meshes: every vertex moves by Gaussian noise of sigma = LEVEL × the bounding-box diagonal
+ * (faces kept, so the human segmentations still apply); the face labels are scored on the clean
+ * mesh with the PSB metrics (1 − RI, mean over humans, then shapes), as scripts/eval_psb.sh does.
+ * Clouds: 20 k points sampled area-uniformly from the clean mesh (seed 1), moved by the same
+ * noise, segmented without normals; each point takes its source face's human labels and the
+ * labels are scored with the point Rand index.
+ * The noise is deterministic: the draw of shape N at level L uses seed N × 1000 + L × 10000
+ * (+ --seed-offset), with the project's own normal deviates (tests/util/cloud_sampler).
+ *
+ *   build/bin/bench_noise [PSB_DIR] [--kind mesh|cloud] [--levels 0,0.2,0.5,1]
+ *                         [--models 1,21,...|--half tune|check] [--points N] [--seed-offset K]
+ *                         [--write DIR]
+ * PSB_DIR defaults to ../shared/data/psb-dev. Levels are in percent of the diagonal. --half tune
+ * takes ids 1, 21, 41, ... (id mod 20 = 1), --half check ids 6, 26, 46, ... --write DIR writes
+ * the noisy meshes as DIR/LEVEL/off/N.off (the input of segmat_mesh or scripts/eval_psb.sh).
+ * Prints one row per shape and level on stderr, then a table per level: 1 − RI, parts per
+ * shape, median and max seconds per shape (one thread, segmentation from the file's geometry).
+ */
+// The test sampler is compiled in (bench programs link only the library).
+#include "../tests/util/cloud_sampler.cpp"
+#include "bench_common.h"
+
+#include <segmat/common/error.h>
+#include <segmat/evaluation/psb_metrics.h>
+#include <segmat/io/off.h>
+#include <segmat/io/seg.h>
+#include <segmat/segmentation/cloud_segmentation.h>
+#include <segmat/segmentation/mesh_segmentation.h>
+
+#include <pcl/console/print.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Result
+{
+  double ri = 0.0;
+  int parts = 0;
+  double seconds = 0.0;
+};
+
+std::vector<double>
+parseList(const std::string& text)
+{
+  std::vector<double> values;
+  std::stringstream list(text);
+  for (std::string item; std::getline(list, item, ',');)
+    values.push_back(std::stod(item));
+  return values;
+}
+
+Result
+segmentMesh(const segmat::TriangleMesh& clean, double level, std::uint32_t seed,
+            const std::vector<std::vector<int>>& humans, const std::string& write_path)
+{
+  auto input = std::make_shared<segmat::TriangleMesh>(clean);
+  if (level > 0.0)
+    segmat::test::addGaussianNoise(*input, level / 100.0, seed);
+  if (!write_path.empty()) {
+    std::filesystem::create_directories(std::filesystem::path(write_path).parent_path());
+    segmat::io::saveOff(write_path, *input);
+  }
+  segmat::MeshSegmentation seg;
+  seg.setInputMesh(input);
+  seg.setNumberOfThreads(1);
+  std::vector<int> labels;
+  const auto start = std::chrono::steady_clock::now();
+  const bool ok = seg.segment(labels);
+  Result r;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!ok)
+    labels.assign(clean.numFaces(), 0);
+  r.parts = int(std::set<int>(labels.begin(), labels.end()).size());
+  const segmat::PsbEvaluator evaluator(clean);
+  for (const auto& human : humans) {
+    segmat::PsbScores scores;
+    if (!evaluator.score(labels, human, scores))
+      throw segmat::Error("cannot score a segmentation of this mesh");
+    r.ri += scores.RI / double(humans.size());
+  }
+  return r;
+}
+
+Result
+segmentCloud(const segmat::test::SampledCloud& clean, double level, std::uint32_t seed,
+             const std::vector<std::vector<int>>& humans)
+{
+  segmat::test::SampledCloud noisy = clean;
+  if (level > 0.0)
+    segmat::test::addGaussianNoise(noisy, level / 100.0, seed);
+  segmat::CloudSegmentation<pcl::PointNormal> seg;
+  seg.setInputCloud(noisy.toPointNormal());
+  seg.setUseInputNormalsFlag(false);
+  seg.setNumberOfThreads(1);
+  std::vector<pcl::PointIndices> parts;
+  const auto start = std::chrono::steady_clock::now();
+  const bool ok = seg.segment(parts);
+  Result r;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.parts = ok ? int(parts.size()) : 0;
+  const std::vector<int> labels = ok ? seg.getLabels() : std::vector<int>(noisy.size(), 0);
+  for (const auto& human : humans)
+    r.ri += segmat::test::randIndexError(labels, clean.pointLabels(human)) / double(humans.size());
+  return r;
+}
+
+} // namespace
+
+int
+main(int argc, char** argv)
+{
+  std::string dir = "../shared/data/psb-dev", kind = "mesh", write_dir, half;
+  std::vector<double> levels = {0.0, 0.2, 0.5, 1.0};
+  std::vector<int> only;
+  std::size_t points = 20000;
+  std::uint32_t seed_offset = 0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (arg == "--kind" && has_value)
+      kind = argv[++i];
+    else if (arg == "--levels" && has_value)
+      levels = parseList(argv[++i]);
+    else if (arg == "--models" && has_value)
+      for (double id : parseList(argv[++i]))
+        only.push_back(int(id));
+    else if (arg == "--half" && has_value)
+      half = argv[++i];
+    else if (arg == "--points" && has_value)
+      points = std::stoul(argv[++i]);
+    else if (arg == "--seed-offset" && has_value)
+      seed_offset = std::uint32_t(std::stoul(argv[++i]));
+    else if (arg == "--write" && has_value)
+      write_dir = argv[++i];
+    else if (!arg.empty() && arg[0] != '-')
+      dir = arg;
+    else {
+      std::cerr << "usage: bench_noise [PSB_DIR] [--kind mesh|cloud] [--levels 0,0.2,0.5,1] "
+                   "[--models 1,21,...|--half tune|check] [--points N] [--seed-offset K] "
+                   "[--write DIR]\n";
+      return arg == "-h" || arg == "--help" ? 0 : 2;
+    }
+  }
+  if ((kind != "mesh" && kind != "cloud") || (!half.empty() && half != "tune" && half != "check")) {
+    std::cerr << "bench_noise: --kind is mesh or cloud, --half is tune or check\n";
+    return 2;
+  }
+  pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
+
+  std::vector<int> models;
+  for (const auto& entry : std::filesystem::directory_iterator(dir + "/off")) {
+    const int id = std::atoi(entry.path().stem().string().c_str());
+    const bool in_half = half.empty() || (half == "tune" ? id % 20 == 1 : id % 20 == 6);
+    if (id > 0 && in_half && (only.empty() || std::count(only.begin(), only.end(), id)))
+      models.push_back(id);
+  }
+  std::sort(models.begin(), models.end());
+  if (models.empty()) {
+    std::cerr << "bench_noise: no model in " << dir << "/off\n";
+    return 1;
+  }
+
+  std::vector<std::vector<Result>> results(levels.size());
+  try {
+    for (int id : models) {
+      const std::string stem = std::to_string(id);
+      const segmat::TriangleMesh mesh = segmat::io::loadOff(dir + "/off/" + stem + ".off");
+      std::vector<std::vector<int>> humans;
+      for (int k = 0;; ++k) {
+        const std::string path =
+            dir + "/seg/Benchmark/" + stem + "/" + stem + "_" + std::to_string(k) + ".seg";
+        if (!std::filesystem::exists(path))
+          break;
+        humans.push_back(segmat::io::loadSeg(path, long(mesh.numFaces())));
+      }
+      if (humans.empty())
+        continue;
+      const segmat::test::SampledCloud cloud =
+          kind == "cloud" ? segmat::test::sampleMesh(mesh, points, 1) : segmat::test::SampledCloud();
+      for (std::size_t l = 0; l < levels.size(); ++l) {
+        const std::uint32_t seed =
+            std::uint32_t(id) * 1000u + std::uint32_t(levels[l] * 10000.0) + seed_offset;
+        std::string write_path;
+        if (!write_dir.empty()) {
+          char level_name[32];
+          std::snprintf(level_name, sizeof level_name, "%g", levels[l]);
+          write_path = write_dir + "/" + level_name + "/off/" + stem + ".off";
+        }
+        const Result r = kind == "mesh" ? segmentMesh(mesh, levels[l], seed, humans, write_path)
+                                        : segmentCloud(cloud, levels[l], seed, humans);
+        results[l].push_back(r);
+        std::fprintf(stderr, "%s %d sigma %g%%: 1-RI %.4f, %d parts, %.2f s\n", kind.c_str(), id,
+                     levels[l], r.ri, r.parts, r.seconds);
+      }
+    }
+  }
+  catch (const segmat::Error& e) {
+    std::cerr << "bench_noise: " << e.what() << "\n";
+    return 1;
+  }
+
+  std::printf("%s, %zu shapes%s%s\n\n", kind == "mesh" ? "meshes" : "clouds (no normals)",
+              results[0].size(), half.empty() ? "" : ", half ", half.c_str());
+  std::printf("| noise sigma (%% of diagonal) | 1 - RI | parts per shape | median s | max s |\n"
+              "|---|---|---|---|---|\n");
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    double ri = 0.0, parts = 0.0;
+    std::vector<double> seconds;
+    for (const Result& r : results[l]) {
+      ri += r.ri / double(results[l].size());
+      parts += r.parts / double(results[l].size());
+      seconds.push_back(r.seconds);
+    }
+    std::printf("| %g | %.4f | %.1f | %.2f | %.2f |\n", levels[l], ri, parts, segmat::bench::median(seconds),
+                *std::max_element(seconds.begin(), seconds.end()));
+  }
+  return 0;
+}

@@ -1,0 +1,426 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "surface_denoising.h"
+#include "local_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace segmat {
+namespace detail {
+namespace {
+
+/// Where point \a self lies on its own side of the surface: a quadratic height field over the
+/// neighbourhood's PCA tangent plane, fitted with spatial weights exp(−d²/support²) times
+/// Gaussian weights (bandwidth \a band) on each neighbour's residual, refitted a few times
+/// from the plane through the point itself. The residual weights are what keep the two sides of
+/// a thin wall apart: a plain fit over neighbours from both sides lands in the middle of the
+/// wall and flattens the wall into one sheet (the winding number then sees no volume there).
+Eigen::Vector3f
+sidedHeightFit(const std::vector<Eigen::Vector3f>& points, int self, const pcl::Indices& nn,
+               const std::vector<float>& d2, double support, double band)
+{
+  const auto pca = neighbourhoodPca(points, nn);
+  const Eigen::Vector3d n = pca.eigenvectors().col(0), e1 = pca.eigenvectors().col(1),
+                        e2 = pca.eigenvectors().col(2);
+  const Eigen::Vector3d origin = points[self].cast<double>();
+  const std::size_t m = nn.size();
+  std::vector<Eigen::Matrix<double, 6, 1>> basis(m);
+  std::vector<double> height(m), spatial(m);
+  for (std::size_t a = 0; a < m; ++a) {
+    const Eigen::Vector3d d = points[nn[a]].cast<double>() - origin;
+    const double u = d.dot(e1) / support, v = d.dot(e2) / support; // unit-free: well posed
+    basis[a] << 1.0, u, v, u * u, u * v, v * v;
+    height[a] = d.dot(n);
+    spatial[a] = std::exp(-double(d2[a]) / (support * support));
+  }
+  // From the plane through the point, with a wide residual band that narrows: a narrow band at
+  // once would leave too few neighbours on a curved surface to fix six coefficients. A small
+  // ridge on the curvature terms keeps the fit posed where few neighbours remain.
+  Eigen::Matrix<double, 6, 1> coef = Eigen::Matrix<double, 6, 1>::Zero();
+  const double bands[] = {4.0 * band, 2.0 * band, band, band};
+  for (const double b : bands) {
+    const double inv_band2 = 1.0 / (2.0 * b * b);
+    Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+    double total = 0.0;
+    for (std::size_t a = 0; a < m; ++a) {
+      const double r = height[a] - basis[a].dot(coef);
+      const double w = spatial[a] * std::exp(-r * r * inv_band2);
+      normal += w * basis[a] * basis[a].transpose();
+      rhs += w * height[a] * basis[a];
+      total += w;
+    }
+    if (!(total > 1e-6))
+      break;
+    for (int c = 3; c < 6; ++c)
+      normal(c, c) += 1e-3 * total;
+    const Eigen::Matrix<double, 6, 1> next = normal.ldlt().solve(rhs);
+    if (!next.allFinite())
+      break;
+    coef = next;
+  }
+  return (origin + coef[0] * n).cast<float>();
+}
+
+} // namespace
+
+double
+median(std::vector<float> values)
+{
+  if (values.empty())
+    return 0.0;
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return double(values[values.size() / 2]);
+}
+
+namespace {
+
+/// Offset of near[0] from the PCA plane through the mean of \a near (itself included). With
+/// few neighbours a plane is all that can be fitted; it takes the curvature for noise.
+double
+planeOffset(const std::vector<Eigen::Vector3f>& positions, const pcl::Indices& near)
+{
+  const auto pca = neighbourhoodPca(positions, near);
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (int j : near)
+    mean += positions[j].cast<double>();
+  mean /= double(near.size());
+  return std::abs((positions[near[0]].cast<double>() - mean).dot(pca.eigenvectors().col(0)));
+}
+
+/// Offset of near[0] from the quadratic height field fitted to the other samples of \a near
+/// over their PCA plane, divided by sqrt(1 + h) (h the fit's variance at the sample in units of
+/// σ²), so that for pure noise it is a draw of N(0, σ²): the quadratic absorbs the curvature
+/// that a plane would count as noise.
+double
+quadraticOffset(const std::vector<Eigen::Vector3f>& positions, const pcl::Indices& near,
+                const std::vector<float>& d2)
+{
+  const auto pca = neighbourhoodPca(positions, near);
+  const Eigen::Vector3d n = pca.eigenvectors().col(0), e1 = pca.eigenvectors().col(1),
+                        e2 = pca.eigenvectors().col(2);
+  const Eigen::Vector3d origin = positions[near[0]].cast<double>();
+  const double support = std::sqrt(double(d2.back()));
+  if (!(support > 0.0))
+    return 0.0;
+  Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+  for (std::size_t a = 1; a < near.size(); ++a) {
+    const Eigen::Vector3d d = positions[near[a]].cast<double>() - origin;
+    const double u = d.dot(e1) / support, v = d.dot(e2) / support;
+    Eigen::Matrix<double, 6, 1> b;
+    b << 1.0, u, v, u * u, u * v, v * v;
+    normal += b * b.transpose();
+    rhs += d.dot(n) * b;
+  }
+  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(normal);
+  if (solver.info() != Eigen::Success || !(solver.rcond() > 1e-9))
+    return planeOffset(positions, near);
+  const Eigen::Matrix<double, 6, 1> coef = solver.solve(rhs);
+  const Eigen::Matrix<double, 6, 1> unit = Eigen::Matrix<double, 6, 1>::Unit(0);
+  const double h = unit.dot(solver.solve(unit));
+  return std::abs(coef[0]) / std::sqrt(1.0 + h);
+}
+
+} // namespace
+
+SurfaceNoise
+estimateSurfaceNoise(const std::vector<Eigen::Vector3f>& positions,
+                     const SampleNeighbourhoods& neighbourhoods, int stride, int threads)
+{
+  const int n = static_cast<int>(positions.size());
+  const int count = (n + stride - 1) / stride;
+  std::vector<float> noise(count, 0.0f), spacing(count, 0.0f);
+#pragma omp parallel num_threads(threads)
+  {
+    pcl::Indices near;
+    std::vector<float> d2;
+#pragma omp for schedule(static)
+    for (int s = 0; s < count; ++s) {
+      const int i = s * stride;
+      neighbourhoods.close(i, near, d2);
+      if (near.size() < 4)
+        continue;
+      noise[s] = float(near.size() >= 12 ? quadraticOffset(positions, near, d2)
+                                         : planeOffset(positions, near));
+      spacing[s] = std::sqrt(d2[1]); // [0] is the sample itself
+    }
+  }
+  return {median(noise) / 0.6745, median(spacing)};
+}
+
+namespace {
+
+/// One pass of sided quadratic (MLS-like) smoothing: every sample moves onto the height field
+/// of its own side fitted to its wide neighbourhood (sidedHeightFit). A plane fit would pull
+/// thin tubes inwards by about a²/(4R) (a the neighbourhood's size); a quadratic does not.
+/// The residual bandwidth is 1.5 × the samples' noise (floored at a tenth of the spacing).
+/// Nothing moves when that noise is below \a min_noise_ratio × the spacing. The estimate goes to
+/// \a estimate when given. Returns the median move divided by the median spacing (0 when nothing
+/// moved).
+double
+smoothSurface(std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& neighbourhoods,
+              int threads, double min_noise_ratio, SurfaceNoise* estimate)
+{
+  const int n = static_cast<int>(positions.size());
+  if (n < 6)
+    return 0.0;
+  neighbourhoods.update(positions);
+  // A quarter of the samples tells the noise as well as all of them, at a quarter of the cost
+  // that a clean input pays for finding out it is clean.
+  const SurfaceNoise found = estimateSurfaceNoise(positions, neighbourhoods, 4, threads);
+  if (estimate)
+    *estimate = found;
+  const double noise = found.sigma, spacing = found.spacing;
+  const double band = std::max(1.5 * noise, 0.1 * spacing);
+  if (!(spacing > 0.0) || noise < min_noise_ratio * spacing)
+    return 0.0;
+  std::vector<Eigen::Vector3f> moved(positions);
+  std::vector<float> moves(n, 0.0f);
+#pragma omp parallel num_threads(threads)
+  {
+    pcl::Indices nn;
+    std::vector<float> d2;
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      neighbourhoods.wide(i, nn, d2);
+      if (nn.size() < 6 || !(d2.back() > 0.0f))
+        continue;
+      moved[i] = sidedHeightFit(positions, i, nn, d2, std::sqrt(double(d2.back())), band);
+      moves[i] = (moved[i] - positions[i]).norm();
+    }
+  }
+  positions.swap(moved);
+  return median(moves) / spacing;
+}
+
+/// Nearest samples in space, from a kd-tree rebuilt on every update.
+class NearestNeighbourhoods : public SampleNeighbourhoods
+{
+public:
+  explicit NearestNeighbourhoods(int k) : k_(k) {}
+
+  void
+  update(const std::vector<Eigen::Vector3f>& positions) override
+  {
+    count_ = static_cast<int>(positions.size());
+    cloud_ = toXYZ(positions);
+    tree_.setInputCloud(cloud_);
+  }
+
+  void
+  close(int i, pcl::Indices& nn, std::vector<float>& d2) const override
+  {
+    search(i, std::min(8, count_), nn, d2);
+  }
+
+  void
+  wide(int i, pcl::Indices& nn, std::vector<float>& d2) const override
+  {
+    search(i, std::min(k_, count_), nn, d2);
+  }
+
+private:
+  void
+  search(int i, int k, pcl::Indices& nn, std::vector<float>& d2) const
+  {
+    if (tree_.nearestKSearch((*cloud_)[i], k, nn, d2) <= 0) {
+      nn.clear();
+      d2.clear();
+    }
+  }
+
+  int k_;
+  int count_ = 0;
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud_;
+  PointKdTree tree_;
+};
+
+/// Rings of mesh vertices: fixed lists (the connectivity does not move), distances from the
+/// current positions.
+class RingNeighbourhoods : public SampleNeighbourhoods
+{
+public:
+  RingNeighbourhoods(std::size_t vertex_count, const std::vector<Eigen::Vector3i>& faces, int k)
+  {
+    std::vector<std::vector<int>> ring(vertex_count);
+    for (const Eigen::Vector3i& f : faces)
+      for (int c = 0; c < 3; ++c) {
+        const int a = f[c], b = f[(c + 1) % 3];
+        if (a == b || a < 0 || b < 0 || std::size_t(a) >= vertex_count ||
+            std::size_t(b) >= vertex_count)
+          continue;
+        ring[a].push_back(b);
+        ring[b].push_back(a);
+      }
+    for (auto& r : ring) {
+      std::sort(r.begin(), r.end());
+      r.erase(std::unique(r.begin(), r.end()), r.end());
+    }
+    close_.resize(vertex_count);
+    rings_.resize(vertex_count);
+    std::vector<int> mark(vertex_count, -1);
+    for (int v = 0; v < int(vertex_count); ++v) {
+      std::vector<int>& around = rings_[v];
+      around.push_back(v);
+      mark[v] = v;
+      std::size_t begin = 0;
+      for (int depth = 0; depth < 3 && (depth < 2 || int(around.size()) < k); ++depth) {
+        const std::size_t end = around.size();
+        for (std::size_t a = begin; a < end; ++a)
+          for (int w : ring[around[a]])
+            if (mark[w] != v) {
+              mark[w] = v;
+              around.push_back(w);
+            }
+        begin = end;
+        if (depth == 1)
+          close_[v] = around;
+      }
+      if (close_[v].empty())
+        close_[v] = around;
+    }
+  }
+
+  void
+  update(const std::vector<Eigen::Vector3f>& positions) override
+  {
+    positions_ = &positions;
+  }
+
+  void
+  close(int i, pcl::Indices& nn, std::vector<float>& d2) const override
+  {
+    nn.assign(close_[i].begin(), close_[i].end());
+    sortByDistance(i, nn, d2);
+  }
+
+  void
+  wide(int i, pcl::Indices& nn, std::vector<float>& d2) const override
+  {
+    nn.assign(rings_[i].begin(), rings_[i].end());
+    sortByDistance(i, nn, d2);
+  }
+
+private:
+  void
+  sortByDistance(int i, pcl::Indices& nn, std::vector<float>& d2) const
+  {
+    const std::vector<Eigen::Vector3f>& p = *positions_;
+    std::vector<std::pair<float, int>> order(nn.size());
+    for (std::size_t a = 0; a < nn.size(); ++a)
+      order[a] = {nn[a] == i ? -1.0f : (p[nn[a]] - p[i]).squaredNorm(), nn[a]};
+    std::sort(order.begin(), order.end());
+    d2.resize(nn.size());
+    for (std::size_t a = 0; a < nn.size(); ++a) {
+      nn[a] = order[a].second;
+      d2[a] = std::max(0.0f, order[a].first);
+    }
+  }
+
+  std::vector<std::vector<int>> close_; // two rings
+  std::vector<std::vector<int>> rings_;
+  const std::vector<Eigen::Vector3f>* positions_ = nullptr;
+};
+
+} // namespace
+
+SurfaceDenoising
+denoiseSurface(std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& neighbourhoods,
+               int max_passes, int threads, double min_noise_ratio)
+{
+  constexpr double kStillRatio = 0.05;
+  SurfaceDenoising result;
+  for (int pass = 0; pass < max_passes; ++pass) {
+    const double moved = smoothSurface(positions, neighbourhoods, threads,
+                                       pass == 0 ? min_noise_ratio : 0.0,
+                                       pass == 0 ? &result.noise : nullptr);
+    if (moved > 0.0)
+      ++result.passes;
+    if (moved < kStillRatio)
+      break;
+  }
+  return result;
+}
+
+SurfaceDenoising
+denoiseCloudSurface(std::vector<Eigen::Vector3f>& positions, int k, int max_passes, int threads)
+{
+  NearestNeighbourhoods neighbourhoods(k);
+  return denoiseSurface(positions, neighbourhoods, max_passes, threads);
+}
+
+double
+medianFaceTurn(const std::vector<Eigen::Vector3d>& vertices,
+               const std::vector<Eigen::Vector3i>& faces)
+{
+  const std::size_t nf = faces.size();
+  std::vector<Eigen::Vector3d> normals(nf, Eigen::Vector3d::Zero());
+  for (std::size_t f = 0; f < nf; ++f) {
+    const Eigen::Vector3i& t = faces[f];
+    const Eigen::Vector3d n =
+        (vertices[t[1]] - vertices[t[0]]).cross(vertices[t[2]] - vertices[t[0]]);
+    if (n.norm() > 0.0)
+      normals[f] = n.normalized();
+  }
+  // Faces by undirected edge, sorted: neighbours are consecutive entries with the same edge.
+  std::vector<std::tuple<int, int, int>> edges;
+  edges.reserve(3 * nf);
+  for (std::size_t f = 0; f < nf; ++f)
+    for (int c = 0; c < 3; ++c) {
+      const int a = faces[f][c], b = faces[f][(c + 1) % 3];
+      edges.emplace_back(std::min(a, b), std::max(a, b), int(f));
+    }
+  std::sort(edges.begin(), edges.end());
+  std::vector<float> turn(nf, 180.0f);
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && std::get<0>(edges[j]) == std::get<0>(edges[i]) &&
+           std::get<1>(edges[j]) == std::get<1>(edges[i]))
+      ++j;
+    for (std::size_t a = i; a < j; ++a)
+      for (std::size_t b = a + 1; b < j; ++b) {
+        const int fa = std::get<2>(edges[a]), fb = std::get<2>(edges[b]);
+        if (normals[fa].isZero() || normals[fb].isZero())
+          continue;
+        const double cosine = std::clamp(normals[fa].dot(normals[fb]), -1.0, 1.0);
+        const float degrees = float(std::acos(cosine) * 180.0 / M_PI);
+        turn[fa] = std::min(turn[fa], degrees);
+        turn[fb] = std::min(turn[fb], degrees);
+      }
+    i = j;
+  }
+  return median(turn);
+}
+
+SurfaceDenoising
+denoiseMeshSurface(std::vector<Eigen::Vector3d>& vertices,
+                   const std::vector<Eigen::Vector3i>& faces, int k, int max_passes, int threads,
+                   double noisy_degrees)
+{
+  SurfaceDenoising result;
+  result.face_turn_degrees = medianFaceTurn(vertices, faces);
+  std::vector<Eigen::Vector3f> positions(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    positions[i] = vertices[i].cast<float>();
+  RingNeighbourhoods neighbourhoods(positions.size(), faces, k);
+  if (result.face_turn_degrees < noisy_degrees) {
+    // Clean: only the estimate, for the report.
+    neighbourhoods.update(positions);
+    result.noise = estimateSurfaceNoise(positions, neighbourhoods, 4, threads);
+    return result;
+  }
+  const double turn = result.face_turn_degrees;
+  result = denoiseSurface(positions, neighbourhoods, max_passes, threads, 0.0);
+  result.face_turn_degrees = turn;
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    vertices[i] = positions[i].cast<double>();
+  return result;
+}
+
+} // namespace detail
+} // namespace segmat
