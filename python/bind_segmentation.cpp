@@ -84,9 +84,13 @@ parseKeywords(const std::vector<Parameter<S>>& table, const py::kwargs& kwargs,
     else if (parameter->kind == ParameterKind::Whole) {
       if (is_bool || !PyIndex_Check(value.ptr()))
         throw py::type_error(function + "(): '" + name + "' must be an integer");
-      const long long whole = py::cast<long long>(py::reinterpret_steal<py::object>(
-          PyNumber_Index(value.ptr())));
-      number = static_cast<double>(whole);
+      const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+      if (!index)
+        throw py::error_already_set();
+      int overflow = 0;
+      const long long whole = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
+      // beyond long long: out of every range below
+      number = overflow != 0 ? overflow * HUGE_VAL : static_cast<double>(whole);
     }
     else {
       if (is_bool || !PyNumber_Check(value.ptr()) || PyComplex_Check(value.ptr()))
@@ -94,7 +98,7 @@ parseKeywords(const std::vector<Parameter<S>>& table, const py::kwargs& kwargs,
       number = py::cast<double>(py::float_(py::reinterpret_borrow<py::object>(value)));
     }
     if (!std::isfinite(number) || number < parameter->lowest || number > parameter->highest)
-      throw py::value_error(function + "(): " + name + "=" + formatNumber(number) +
+      throw py::value_error(function + "(): " + name + "=" + std::string(py::repr(value)) +
                             " is out of range");
     settings.push_back({parameter, number});
   }

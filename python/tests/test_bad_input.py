@@ -70,6 +70,8 @@ def test_bad_keywords():
         segmat.segment_mesh(V, F, reference_crease=1)
     with pytest.raises(ValueError, match="threads=-1 is out of range"):
         segmat.segment_mesh(V, F, threads=-1)
+    with pytest.raises(ValueError, match="seed=1000000000000000000000000000000 is out of range"):
+        segmat.segment_mesh(V, F, seed=10**30)
     # The library's own rules: δ0 > 0, η in [0, 1], bend angle in (0, 90].
     for name, value in (("delta0", -0.5), ("eta", 2.0), ("max_bend", 120.0), ("delta0", float("nan"))):
         with pytest.raises(ValueError, match=name):
