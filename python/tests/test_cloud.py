@@ -1,0 +1,33 @@
+# The cloud path from Python against segmat_cloud on a cloud sampled from a psb-dev mesh.
+import numpy as np
+
+import segmat
+
+
+def test_labels_equal_the_programs_on_a_psb_dev_cloud(psb_cloud):
+    points, normals, cli_labels, cli_info, _ = psb_cloud
+    segmenter = segmat.CloudSegmenter(points, normals)
+    labels = segmenter.segment()
+    assert labels.dtype == np.int32 and labels.shape == (len(points),)
+    np.testing.assert_array_equal(labels, cli_labels)
+    info = segmenter.info
+    for key in ("parts", "point_counts"):
+        assert info[key] == cli_info[key], key
+    assert list(info["runs"]) == cli_info["runs"]
+    assert list(info["seconds"]) == [k for k in cli_info["seconds"] if k not in ("load", "write")]
+    assert info["parts"] > 1 and segmenter.base_mat[0].shape[1] == 3
+
+
+def test_other_parameters_and_the_colours(psb_cloud):
+    points, normals, cli_labels, _, directory = psb_cloud
+    segmenter = segmat.CloudSegmenter(points, normals)
+    coarse = segmenter.segment(delta0=1.0)
+    assert coarse.max() < cli_labels.max()
+    # The parameters of one call do not stay for the next.
+    np.testing.assert_array_equal(segmenter.segment(), cli_labels)
+    # The C++ cloud path has no medial-step cache: every call computes it.
+    assert segmenter.mat_computations == 2
+    # segmat_cloud's PLY: "x y z r g b" per point.
+    lines = (directory / "341.ply").read_text().splitlines()
+    rgb = np.array([l.split()[3:6] for l in lines[lines.index("end_header") + 1:]], dtype=float)
+    np.testing.assert_array_equal(np.rint(segmat.labels_to_colors(cli_labels) * 255), rgb)
