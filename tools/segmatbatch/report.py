@@ -115,7 +115,8 @@ def html_text(out_dir, summary, title="segmat batch report"):
         f'<th class="{"t " if h in ("name", "picture", "category", "status", "error") else ""}'
         f'{"" if h == "picture" else "sortable"}">{h}</th>' for h in headers)
     facts = ", ".join(f"{k}: {html.escape(str(v))}" for k, v in run.items()
-                      if k in ("input", "shard", "jobs", "wall_seconds", "finished_at", "merged"))
+                      if k in ("input", "shard", "jobs", "wall_seconds", "finished_at", "merged")
+                      and v is not None)
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>{html.escape(title)}</title>
 <style>{_STYLE}</style></head><body>

@@ -137,13 +137,12 @@ class Runner:
         try:
             peak = self._segment(shape, work, deadline, record)
             if self.options.png:
-                _, seconds, mb = self._run(
+                _, seconds, _ = self._run(
                     [self.options.programs["segmat_render"], shape.path,
                      os.path.join(work, _labels_file(shape)), "-o",
                      os.path.join(work, shape.name + ".png"), "--size", self.options.png_size],
                     deadline)
                 record["stages"]["render"] = round(seconds, 4)
-                peak = max(peak, mb)
             if shape.truths and shape.kind == "mesh":
                 stdout, seconds, _ = self._run(
                     [self.options.programs["segmat_eval"], "--mesh", shape.path, "--pred",
@@ -172,7 +171,9 @@ class Runner:
         return record
 
     def _segment(self, shape, work, deadline, record):
-        """segmat_mesh or segmat_cloud with --json; fills parts and stage seconds; peak MB."""
+        """segmat_mesh or segmat_cloud with --json; fills parts and stage seconds; returns the
+        program's peak resident memory in MB (the shape's figure: pictures and scoring are
+        small beside it, except VTK's fixed cost)."""
         program = "segmat_mesh" if shape.kind == "mesh" else "segmat_cloud"
         prefix = os.path.join(work, shape.name)
         stdout, seconds, peak = self._run(
@@ -207,6 +208,7 @@ def write_text_atomically(path, text):
     os.makedirs(folder, exist_ok=True)
     fd, tmp = tempfile.mkstemp(dir=folder, prefix="." + os.path.basename(path) + ".")
     try:
+        os.fchmod(fd, 0o644)  # mkstemp's 0600 would hide reports from a shared group
         with os.fdopen(fd, "w", encoding="utf-8") as f:
             f.write(text)
             f.flush()
