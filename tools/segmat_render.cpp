@@ -48,6 +48,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <ostream>
 #include <string>
@@ -222,31 +223,30 @@ makeActor(const Shape& shape, int point_size)
   return actor;
 }
 
-/// Looks at the shape from direction \a toward_eye with \a up, in parallel projection, the
-/// bounding box's projection fitted to the viewport with a 5 % margin.
+/// Looks at \a points from direction \a toward_eye with \a up, in parallel projection, their
+/// projection centred and fitted to the viewport with a 5 % margin.
 void
-placeCamera(vtkRenderer* renderer, const Eigen::Vector3d& toward_eye, const Eigen::Vector3d& up,
-            double aspect)
+placeCamera(vtkRenderer* renderer, const std::vector<Eigen::Vector3d>& points,
+            const Eigen::Vector3d& toward_eye, const Eigen::Vector3d& up, double aspect)
 {
-  double b[6];
-  renderer->ComputeVisiblePropBounds(b);
-  const Eigen::Vector3d centre((b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2);
   const Eigen::Vector3d back = toward_eye.normalized();
   const Eigen::Vector3d right = up.cross(back).normalized(), top = back.cross(right);
-  double half_width = 0.0, half_height = 0.0;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Eigen::Vector3d p(b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)]);
-    half_width = std::max(half_width, std::abs((p - centre).dot(right)));
-    half_height = std::max(half_height, std::abs((p - centre).dot(top)));
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
+  Eigen::Vector3d high = -low;
+  for (const Eigen::Vector3d& p : points) { // extents along right, top and back
+    const Eigen::Vector3d q(p.dot(right), p.dot(top), p.dot(back));
+    low = low.cwiseMin(q);
+    high = high.cwiseMax(q);
   }
-  const double radius = (Eigen::Vector3d(b[1], b[3], b[5]) - centre).norm();
+  const Eigen::Vector3d mid = (low + high) / 2, half = (high - low) / 2;
+  const Eigen::Vector3d centre = mid.x() * right + mid.y() * top + mid.z() * back;
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->ParallelProjectionOn();
   camera->SetFocalPoint(centre.data());
-  const Eigen::Vector3d eye = centre + back * (3.0 * radius + 1e-9);
+  const Eigen::Vector3d eye = centre + back * (2.0 * half.norm() + 1e-9);
   camera->SetPosition(eye.data());
   camera->SetViewUp(top.data());
-  camera->SetParallelScale(1.05 * std::max({half_height, half_width / aspect, 1e-9}));
+  camera->SetParallelScale(1.05 * std::max({half.y(), half.x() / aspect, 1e-9}));
   renderer->ResetCameraClippingRange();
 }
 
@@ -340,7 +340,7 @@ render(const Shape& shape, const std::string& view_name, int width, int height, 
     renderer->AddActor(makeActor(shape, point_size));
     renderer->TwoSidedLightingOn();
     window->AddRenderer(renderer);
-    placeCamera(renderer, chosen[k].toward_eye, chosen[k].up,
+    placeCamera(renderer, shape.points, chosen[k].toward_eye, chosen[k].up,
                 double(panel_width) / panel_height);
     if (part_ids)
       addPartIds(renderer, centres, std::max(12, std::min(panel_width, panel_height) / 30));
