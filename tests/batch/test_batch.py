@@ -84,6 +84,29 @@ class BatchTest(unittest.TestCase):
         self.assertEqual([r["name"] for r in rows], fixtures.MODELS)
         self.assertEqual([r["status"] for r in rows], ["ok"] * 3)
 
+    def test_folder_of_a_mesh_and_a_cloud(self):
+        folder = os.path.join(self.tmp, "mixed")
+        os.makedirs(folder)
+        with open(os.path.join(fixtures.DATA, "psb346", "346.off")) as f:
+            words = f.read().split()
+        count = int(words[1])
+        with open(os.path.join(folder, "bearing.xyz"), "w") as f:
+            for i in range(count):
+                f.write(" ".join(words[4 + 3 * i:7 + 3 * i]) + "\n")
+        os.symlink(os.path.join(fixtures.DATA, "psb246", "246.off"),
+                   os.path.join(folder, "bird.off"))
+        out = os.path.join(self.tmp, "mixed_out")
+        status, _, err = self.batch(folder, "-o", out, "--jobs", "2", env={"DISPLAY": ""})
+        self.assertEqual(status, 0, err)
+        shapes = {s["name"]: s for s in load_summary(out)["shapes"]}
+        self.assertEqual((shapes["bearing"]["kind"], shapes["bird"]["kind"]), ("cloud", "mesh"))
+        labels = fixtures.read_labels(os.path.join(out, "bearing.labels"))
+        self.assertEqual(len(labels), count)
+        self.assertEqual(shapes["bearing"]["parts"], len(set(labels) - {-1}))
+        for name in ("bearing.pcd", "bearing.ply", "bearing.png", "bird.seg", "bird.png"):
+            self.assertTrue(os.path.isfile(os.path.join(out, name)), name)
+        self.assertIsNone(shapes["bird"]["metrics"])  # no human segmentation in this folder
+
     def test_picture_has_the_ply_colours(self):
         colors = fixtures.label_colors(os.path.join(self.single, "246.seg"),
                                        os.path.join(self.single, "246.ply"))
