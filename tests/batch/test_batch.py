@@ -175,6 +175,16 @@ class BatchTest(unittest.TestCase):
         ps = subprocess.run(["ps", "-eo", "args"], capture_output=True, text=True).stdout
         self.assertNotIn("sleep 600", ps)
 
+    def test_memory_limit_fails_the_shape_with_the_reason(self):
+        # 20 MB of address space cannot even hold segmat_mesh's shared libraries.
+        out = os.path.join(self.tmp, "memory")
+        status, _, err = self.batch(self.psb, "-o", out, "--no-png", "--shard", "0/3",
+                                    "--max-memory", "20")
+        self.assertEqual(status, 1, err)
+        (shape,) = load_summary(out)["shapes"]
+        self.assertEqual(shape["status"], "failed")
+        self.assertIn("out of memory (--max-memory 20 MB)", shape["error"])
+
     def test_killed_run_restarts_without_redoing_finished_shapes(self):
         slow, first_log = self.fake_mesh("slow", delay="2")
         out = os.path.join(self.tmp, "killed")

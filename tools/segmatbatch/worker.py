@@ -37,6 +37,10 @@ def _child_env():
     return dict(os.environ, OMP_NUM_THREADS=os.environ.get("OMP_NUM_THREADS", "1"))
 
 
+# Messages of a program that ran out of address space (C++, the loader, glibc).
+_MEMORY_SIGNS = ("bad_alloc", "memory", "failed to map", "cannot allocate")
+
+
 class StepFailed(Exception):
     """A program failed: the message is the shape's error."""
 
@@ -118,7 +122,7 @@ class Runner:
         else:
             reason = f"{program} failed (exit status {proc.returncode})"
         if memory_limit and self.options.max_memory_mb and (
-                proc.returncode < 0 or "bad_alloc" in stderr or "memory" in stderr.lower()):
+                proc.returncode < 0 or any(sign in stderr.lower() for sign in _MEMORY_SIGNS)):
             reason += f", likely out of memory (--max-memory {self.options.max_memory_mb:g} MB)"
         return_reason = f"{reason}: {detail}"
         raise StepFailed(return_reason)
