@@ -4,8 +4,8 @@
  *
  * segmat_render: a picture of a segmented mesh or cloud, shaded and coloured by part with the
  * colours of the coloured PLY output (segmat::io::labelColor), rendered by VTK without a screen.
- * Debian's VTK draws through X (GLX) only, so with no DISPLAY the program runs itself again
- * under xvfb-run (a virtual X server with Mesa's software OpenGL).
+ * Debian's VTK draws through X (GLX) only, so with no DISPLAY the program starts its own virtual
+ * X server (Xvfb, drawing with Mesa's software OpenGL) for the picture.
  */
 #include <segmat/common/error.h>
 #include <segmat/io/atomic_file.h>
@@ -38,6 +38,10 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -69,7 +73,7 @@ const char* const kUsage =
     "  --size WxH    picture size in pixels (default 800x600; 1800x600 with --view all)\n"
     "  --part-ids    write each part's label at its centre\n"
     "Parts have the colours of segmat_mesh's and segmat_cloud's coloured PLY; unlabelled (-1)\n"
-    "is grey. Without DISPLAY the program runs under xvfb-run (Debian: xvfb, xauth).\n"
+    "is grey. Without DISPLAY the program starts its own Xvfb (Debian: xvfb).\n"
     "Exit status: 0 success, 2 bad usage or a missing or malformed input, 1 rendering failed.\n";
 
 /// The shape as drawn: triangles (mesh) or none (cloud), one label per face or point.
@@ -385,36 +389,63 @@ parseSize(const std::string& text, int& width, int& height)
   return width <= 8192 && height <= 8192;
 }
 
-/// With no X display, runs this program again under xvfb-run; returns only when that fails.
-void
-reexecUnderXvfb(char** argv)
+/// A private virtual X server for a run with no display; stopped (and reaped) when destroyed.
+class PrivateXvfb
 {
-  const char* display = std::getenv("DISPLAY");
-  if ((display && *display) || std::getenv("SEGMAT_RENDER_UNDER_XVFB"))
-    return;
-  setenv("SEGMAT_RENDER_UNDER_XVFB", "1", 1);
-  std::vector<char*> args{const_cast<char*>("xvfb-run"), const_cast<char*>("-a"),
-                          const_cast<char*>("-s"),
-                          const_cast<char*>("-screen 0 2048x2048x24 -nolisten tcp"),
-                          const_cast<char*>("/proc/self/exe")};
-  for (int i = 1; argv[i]; ++i)
-    args.push_back(argv[i]);
-  args.push_back(nullptr);
-  // /proc/self/exe is resolved by xvfb-run's child, which is no longer this program: pass the
-  // real path instead.
-  char self[4096];
-  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-  if (n > 0) {
-    self[n] = '\0';
-    args[4] = self;
+public:
+  /// Starts Xvfb when DISPLAY is unset or empty: Xvfb picks a free display itself (-displayfd,
+  /// no race with other servers starting) and dies with this program (PR_SET_PDEATHSIG).
+  /// \throws segmat::Error when it cannot be started
+  PrivateXvfb()
+  {
+    const char* display = std::getenv("DISPLAY");
+    if (display && *display)
+      return;
+    int fds[2];
+    if (pipe(fds) != 0)
+      throw segmat::Error(std::string("cannot create a pipe: ") + std::strerror(errno));
+    pid_ = fork();
+    if (pid_ == 0) {
+      close(fds[0]);
+      prctl(PR_SET_PDEATHSIG, SIGTERM);
+      const int null = open("/dev/null", O_RDWR);
+      dup2(null, 0);
+      dup2(null, 1);
+      dup2(null, 2);
+      const std::string fd = std::to_string(fds[1]);
+      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "2048x2048x24",
+             "-nolisten", "tcp", static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    close(fds[1]);
+    std::string number;
+    char c = 0;
+    while (pid_ > 0 && read(fds[0], &c, 1) == 1 && c != '\n')
+      number += c;
+    close(fds[0]);
+    if (number.empty() || number.find_first_not_of("0123456789") != std::string::npos) {
+      stop();
+      throw segmat::Error("no X display (DISPLAY is unset) and Xvfb could not be started: install "
+                          "Debian's xvfb, or set DISPLAY");
+    }
+    setenv("DISPLAY", (":" + number).c_str(), 1);
   }
-  execvp("xvfb-run", args.data());
-  std::fprintf(stderr,
-               "segmat_render: no X display (DISPLAY is unset) and xvfb-run cannot be run (%s); "
-               "install Debian's xvfb and xauth, or set DISPLAY\n",
-               std::strerror(errno));
-  std::exit(1);
-}
+  ~PrivateXvfb() { stop(); }
+  PrivateXvfb(const PrivateXvfb&) = delete;
+  PrivateXvfb& operator=(const PrivateXvfb&) = delete;
+
+private:
+  void stop()
+  {
+    if (pid_ <= 0)
+      return;
+    kill(pid_, SIGTERM);
+    while (waitpid(pid_, nullptr, 0) < 0 && errno == EINTR) {
+    }
+    pid_ = 0;
+  }
+  pid_t pid_ = 0;
+};
 
 } // namespace
 
@@ -484,8 +515,8 @@ main(int argc, char** argv)
     std::cerr << "segmat_render: " << e.what() << "\n";
     return 2;
   }
-  reexecUnderXvfb(argv); // after the inputs are checked: bad input fails fast, without X
-  try {
+  try { // X only after the inputs are checked: bad input fails fast
+    const PrivateXvfb xvfb;
     render(shape, view, width, height, part_ids, out_path);
   }
   catch (const std::exception& e) {

@@ -4,6 +4,7 @@
 outputs."""
 import argparse
 import concurrent.futures
+import ctypes
 import json
 import os
 import shutil
@@ -88,7 +89,7 @@ def _start_xvfb():
     server = subprocess.Popen(
         ["Xvfb", "-displayfd", str(write_end), "-screen", "0", "2048x2048x24", "-nolisten", "tcp"],
         pass_fds=(write_end,), stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-        stderr=subprocess.DEVNULL, start_new_session=True)
+        stderr=subprocess.DEVNULL, start_new_session=True, preexec_fn=_die_with_parent)
     os.close(write_end)
     with os.fdopen(read_end) as f:
         display = f.readline().strip()
@@ -98,6 +99,13 @@ def _start_xvfb():
         return None
     os.environ["DISPLAY"] = ":" + display
     return server
+
+
+def _die_with_parent():
+    """In the child: SIGTERM when segmat_batch dies (even killed), so no Xvfb is left behind.
+    (Called before any worker thread exists.)"""
+    PR_SET_PDEATHSIG = 1
+    ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGTERM)
 
 
 def _parse_size(text):
