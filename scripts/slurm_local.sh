@@ -9,8 +9,10 @@ set -euo pipefail
 pidfiles=(/run/slurmctld.pid /run/slurmd.pid /run/munge/munged.pid)
 stop() {
   for f in "${pidfiles[@]}"; do
-    if [[ -f "$f" ]] && kill "$(cat "$f")" 2>/dev/null; then
-      for _ in $(seq 50); do kill -0 "$(cat "$f")" 2>/dev/null || break; sleep 0.1; done
+    local pid
+    pid="$(cat "$f" 2>/dev/null || true)"
+    if [[ -n "$pid" ]] && kill "$pid" 2>/dev/null; then
+      for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
     fi
     rm -f "$f"
   done
