@@ -12,6 +12,7 @@
 #include <segmat/segmentation/cloud_segmentation.h>
 
 #include "cli_options.h"
+#include "render_call.h"
 
 #include <chrono>
 #include <cmath>
@@ -23,7 +24,7 @@
 namespace {
 
 const char* const kUsage =
-    "usage: segmat_cloud CLOUD -o PREFIX [options] [--json]\n"
+    "usage: segmat_cloud CLOUD -o PREFIX [options] [--json] [--png PICTURE.png]\n"
     "  CLOUD              point cloud (.pcd, .ply, .xyz/.txt), with or without normals\n"
     "  -o PREFIX          writes PREFIX.pcd (x y z label), PREFIX.ply (points coloured by\n"
     "                     part) and PREFIX.labels (one label per input point, input order;\n"
@@ -50,6 +51,7 @@ const char* const kUsage =
     "  --noisy-centres-outside  let Q-MAT move a noisy cloud's merged sphere centres out of\n"
     "                     the surface (faster; by default they are kept inside)\n"
     "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"
+    "  --png FILE         also draw the parts into a PNG (segmat_render, built with VTK)\n"
     "  --json             print one JSON object: parts, point_counts, seconds per stage\n"
     "                     (summed over the runs), runs [made, kept], origin (what a cloud far\n"
     "                     from 0 was moved by; outputs are written back in the file's frame)\n";
@@ -77,6 +79,7 @@ int
 main(int argc, char** argv)
 {
   std::string cloud_path, prefix;
+  std::string png; // --png: a picture by segmat_render
   bool json = false, estimate_normals = false, save_mat = false;
   segmat::CloudSegmentation<pcl::PointNormal> segmentation;
   try {
@@ -143,6 +146,8 @@ main(int argc, char** argv)
         segmentation.setConsensusForEveryCloudFlag(true);
       else if (arg == "--json")
         json = true;
+      else if (arg == "--png")
+        png = value();
       else if (!arg.empty() && arg[0] == '-')
         throw segmat::Error("unknown option " + arg);
       else if (cloud_path.empty())
@@ -181,6 +186,8 @@ main(int argc, char** argv)
     segmat::io::saveLabeledCloudPcd(prefix + ".pcd", labelled);
     segmat::io::saveColoredCloudPly(prefix + ".ply", labelled);
     segmat::io::saveLabels(prefix + ".labels", segmentation.getLabels());
+    if (!png.empty())
+      renderPicture(cloud_path, prefix + ".labels", png);
     if (save_mat && !segmentation.getBaseMat().empty()) {
       segmat::io::saveMa(prefix + "_base.ma", inFileFrame(segmentation.getBaseMat(), loaded.origin));
       segmat::io::saveMa(prefix + "_struct.ma",

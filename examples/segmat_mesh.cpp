@@ -13,6 +13,7 @@
 #include <segmat/segmentation/mesh_segmentation.h>
 
 #include "cli_options.h"
+#include "render_call.h"
 
 #include <chrono>
 #include <cmath>
@@ -27,7 +28,7 @@ const char* const kUsage =
     "usage: segmat_mesh MESH -o PREFIX [-b BASE.ma -s STRUCTURED.ma] [--save-mat] [-g DELTA0]\n"
     "                   [-n ETA] [--seed S] [--max-bend DEG] [--reference-crease]\n"
     "                   [--threads T]\n"
-    "                   [--json]\n"
+    "                   [--json] [--png PICTURE.png]\n"
     "  MESH            closed triangle mesh (.off, .ply, .obj, .stl)\n"
     "  -o PREFIX       writes PREFIX.seg (one label per face, PSB format) and PREFIX.ply\n"
     "                  (faces coloured by part)\n"
@@ -44,7 +45,8 @@ const char* const kUsage =
     "  --reference-crease  price concave creases in the surface cut as SEG-MAT does\n"
     "                  (default: a sharp concave crease is much cheaper to cut than a shallow\n"
     "                  one; see README)\n"
-    "  --json          print one JSON object: parts, face_counts, seconds per stage\n";
+    "  --json          print one JSON object: parts, face_counts, seconds per stage\n"
+    "  --png FILE      also draw the parts into a PNG (segmat_render, built with VTK)\n";
 
 
 
@@ -56,6 +58,7 @@ int
 main(int argc, char** argv)
 {
   std::string mesh_path, base_path, structured_path, prefix;
+  std::string png; // --png: a picture by segmat_render
   bool json = false, save_mat = false;
   segmat::MeshSegmentation segmentation;
   segmentation.setNumberOfThreads(1);
@@ -101,6 +104,8 @@ main(int argc, char** argv)
         segmentation.setCreaseModel(segmat::CreaseModel::Reference);
       else if (arg == "--json")
         json = true;
+      else if (arg == "--png")
+        png = value();
       else if (arg == "--save-mat")
         save_mat = true;
       else if (arg == "--threads") {
@@ -161,6 +166,8 @@ main(int argc, char** argv)
     secondsSince(start);
     segmat::io::saveSeg(prefix + ".seg", labels);
     segmat::io::saveColoredMeshPly(prefix + ".ply", *mesh, labels);
+    if (!png.empty())
+      renderPicture(mesh_path, prefix + ".seg", png);
     if (save_mat) {
       segmat::io::saveMa(prefix + "_base.ma", *segmentation.getBaseMat());
       segmat::io::saveMa(prefix + "_struct.ma", *segmentation.getStructuredMat());

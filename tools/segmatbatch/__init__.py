@@ -1,0 +1,1 @@
+# segmat_batch: the batch runner (tools/segmat_batch).
