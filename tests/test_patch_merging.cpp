@@ -1,5 +1,5 @@
 // Radius histograms, EMD, patch adjacency, Monte-Carlo visibility and merge rounds
-// (reference-facts §3.8, §3.9).
+// (SEG-MAT §4.4).
 #include <segmat/segmentation/patch_merging.h>
 
 #include <gtest/gtest.h>

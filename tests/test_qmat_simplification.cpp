@@ -389,7 +389,7 @@ TEST(QmatSimplification, Deterministic)
 TEST(QmatSimplification, TeddyBaseMatToFifteenSpheres)
 {
   // The authors' teddy base MAT (2000 spheres, 7 spurious cavities) simplified to 15 spheres,
-  // compared with their own 15-sphere structured MAT (reference-facts §1, §8.6): same topology
+  // compared with their own 15-sphere structured MAT (shipped in data/teddy): same topology
   // class (one component, no loop, no cavity), every one of their spheres has one of ours within
   // 10 % of the diagonal and vice versa, all our centres inside the surface.
   const std::string dir = std::string(SEGMAT_DATA_DIR) + "/teddy/";

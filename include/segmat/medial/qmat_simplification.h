@@ -20,15 +20,15 @@ class WindingNumber;
  * MAT (default 2000 spheres) and, continuing the same collapse sequence, the *structured* MAT
  * (default max(15, ⌊0.001 × initial spheres⌋)) (Lin et al., SEG-MAT, TVCG 2022, §3).
  *
- * Edge collapses in order of the cost (Q(m*) + k)·ratio² (§8.4 of reference-facts): Q is the
- * sphere quadric error (SphereQuadric) of the slab tangent planes of every triangle, plus
+ * Edge collapses in order of the cost (Q(m*) + k)·ratio² (Q-MAT's `EvaluateEdgeCollapseCost`): Q
+ * is the sphere quadric error (SphereQuadric) of the slab tangent planes of every triangle, plus
  * boundary terms on sheet borders and pure edges; ratio is the stability ratio, so spikes
  * (one sphere inside the other) go first. Work is done in coordinates divided by a
  * normalisation scale (Q-MAT: the surface's bounding-box diagonal), so k and the weights mean the
  * same on every shape.
  *
- * Differences from the published code, all deliberate (reference-facts §8.3–8.5):
- *  - a real topology check (the published code calls none, §8.5). An edge (a, b) collapses when
+ * Differences from the published code, all deliberate:
+ *  - a real topology check (the published code calls none). An edge (a, b) collapses when
  *    the link condition Lk(a) ∩ Lk(b) = Lk(ab) holds on the simplicial 2-complex of spheres,
  *    edges and triangles (Dey et al. 1999; Attali, Lieutier and Salinas 2012: the collapse then
  *    keeps the homotopy type). In a 2-complex it reads: (i) every common neighbour x of a and b
@@ -112,7 +112,8 @@ public:
   int getBaseTarget() const { return base_target_; }
 
   /** \brief Number of spheres of the structured MAT.
-   * \param[in] n >= 1, or −1 (default) for max(15, ⌊0.001 × initial spheres⌋) (SEG-MAT README).
+   * \param[in] n >= 1, or −1 (default) for max(15, ⌊0.001 × initial spheres⌋) (the SEG-MAT
+   * authors' setting).
    * A value above the base target gives a structured MAT equal to the base MAT. When the
    * automatic target cannot be reached because the topology pins P spheres (islands, holes of
    * a noisy sheet), the structured MAT keeps P + target spheres instead of P (a deviation from

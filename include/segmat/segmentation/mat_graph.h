@@ -60,7 +60,7 @@ public:
   MatGraph(std::vector<Eigen::Vector3d> centers, std::vector<double> radii,
            std::vector<MatNode> nodes, const std::vector<std::vector<int>>& adjacency);
 
-  /** \brief The base-MAT graph of SEG-MAT §4.1 / reference-facts §3.3.
+  /** \brief The base-MAT graph of SEG-MAT §4.1 (the authors' `buildMATGraph`).
    *
    * Nodes: every triangle (in order), then every pure edge (in order). Two nodes are adjacent
    * when they share a sphere and the ratio of their mean radii is below \a radius_gate

@@ -19,7 +19,8 @@ namespace segmat {
 
 /** \brief Region growing on a MAT graph: the part-finding core of SEG-MAT (Lin et al. 2022, §4–5).
  *
- * Steps (reference-facts §3.5–§3.9), on a MatGraph built from a medial mesh (slabs and cones)
+ * Steps (SEG-MAT §4.3–4.4 and the authors' `RegionGrowing`, `MergeTinyPatches`,
+ * `MergeIterations`), on a MatGraph built from a medial mesh (slabs and cones)
  * or from a cloud's meso-skeleton (points with normals):
  *  1. seeds in order of decreasing mean radius (ties: smaller node index first);
  *  2. breadth-first growth: a neighbour j of the current node i joins when
@@ -157,7 +158,7 @@ public:
    *
    * The growing test compares neighbours only, so many small radius steps can carry one region
    * from the body far down a tapering limb. With this guard a node thinner than the seed by
-   * more than this factor is left for a later seed. Not in SEG-MAT; on psb-dev it splits
+   * more than this factor is left for a later seed. Not in SEG-MAT; it splits
    * tapering parts (a vase's neck, a human's limb) where the humans do.
    * \param[in] ratio a value >= 1; other values are rejected with a warning
    */
@@ -242,7 +243,8 @@ public:
   extract(std::vector<pcl::PointIndices>& parts);
 
   /** \brief Per final part, its grown ("coarse") nodes, ascending — the nodes the surface data
-   * term may use (reference-facts §3.10). Never empty for a part: when no region reaches the
+   * term may use (as the authors' `transfer_MAT_mesh`). Never empty for a part: when no region
+   * reaches the
    * minimal size, the leftover components become the parts and all their nodes count as coarse.
    * Valid after extract().
    */
