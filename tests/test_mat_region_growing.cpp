@@ -3,7 +3,7 @@
 #include <segmat/geometry/aabb_tree.h>
 #include <segmat/io/ma.h>
 #include <segmat/io/off.h>
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/medial/mat_graph.h>
 #include <segmat/segmentation/mat_region_growing.h>
 #include <segmat/segmentation/structure_tags.h>
 

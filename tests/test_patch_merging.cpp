@@ -1,6 +1,6 @@
 // Radius histograms, EMD, patch adjacency, Monte-Carlo visibility and merge rounds
 // (SEG-MAT §4.4).
-#include <segmat/segmentation/patch_merging.h>
+#include "../src/segmentation/patch_merging.h"
 
 #include <gtest/gtest.h>
 

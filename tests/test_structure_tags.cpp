@@ -1,7 +1,7 @@
 // Thin-part detection on a structured MAT and transfer to base nodes (SEG-MAT §4.2).
 #include <segmat/geometry/medial_mesh.h>
 #include <segmat/io/ma.h>
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/medial/mat_graph.h>
 #include <segmat/segmentation/structure_tags.h>
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <segmat/geometry/medial_primitives.h>
-#include <segmat/segmentation/growing_cost.h>
+#include "growing_cost.h"
 
 #include <Eigen/Geometry>
 

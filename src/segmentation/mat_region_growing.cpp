@@ -2,10 +2,10 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  */
-#include <segmat/segmentation/growing_cost.h>
+#include "growing_cost.h"
 #include <segmat/common/checked_setter.h>
 #include <segmat/segmentation/mat_region_growing.h>
-#include <segmat/segmentation/patch_merging.h>
+#include "patch_merging.h"
 
 #include "../common/point_kd_tree.h"
 

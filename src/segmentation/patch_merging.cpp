@@ -2,7 +2,7 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  */
-#include <segmat/segmentation/patch_merging.h>
+#include "patch_merging.h"
 
 #include <boost/pending/disjoint_sets.hpp>
 

@@ -5,8 +5,8 @@
 #pragma once
 
 #include <segmat/geometry/triangle_mesh.h>
-#include <segmat/segmentation/alpha_expansion.h>
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/graph_cut/alpha_expansion.h>
+#include <segmat/medial/mat_graph.h>
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>

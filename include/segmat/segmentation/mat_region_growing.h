@@ -4,8 +4,7 @@
  */
 #pragma once
 
-#include <segmat/segmentation/mat_graph.h>
-#include <segmat/segmentation/patch_merging.h>
+#include <segmat/medial/mat_graph.h>
 #include <segmat/segmentation/structure_tags.h>
 
 #include <Eigen/Core>
@@ -17,6 +16,11 @@
 
 namespace segmat {
 
+/** \brief Returns true when the straight segment between two points does not cross the shape's
+ * surface (the points "see" each other): the visibility test of the merging.
+ */
+using SegmentVisibility = std::function<bool(const Eigen::Vector3d&, const Eigen::Vector3d&)>;
+
 /** \brief Region growing on a MAT graph: the part-finding core of SEG-MAT (Lin et al. 2022, §4–5).
  *
  * Steps (SEG-MAT §4.3–4.4 and the authors' `RegionGrowing`, `MergeTinyPatches`,
@@ -25,7 +29,7 @@ namespace segmat {
  *  1. seeds in order of decreasing mean radius (ties: smaller node index first);
  *  2. breadth-first growth: a neighbour j of the current node i joins when
  *     cost(i, j) = min(C_r + α·C_θ, λ·C_mp) <= t, with t = δ0 (both tags 0),
- *     δ0·tag_ratio (same thin part) or 0 (different tags); see growing_cost.h; and (not in
+ *     δ0·tag_ratio (same thin part) or 0 (different tags), see docs/method.md; and (not in
  *     the reference) when j is at most setMaxSeedRadiusRatio() times thinner than the seed;
  *  3. regions with fewer than N_min = max(1, int(η · number of spheres)) nodes are released;
  *     an accepted region swallows every free node that has a sphere centre strictly inside one
@@ -56,9 +60,7 @@ class MatRegionGrowing
 public:
   using Ptr = std::shared_ptr<MatRegionGrowing>;
   using ConstPtr = std::shared_ptr<const MatRegionGrowing>;
-  /** \brief Returns true when the straight segment between two points does not cross the shape's
-   * surface (the two points "see" each other); see patch_merging.h.
-   */
+  /** \brief The visibility test of the merging (segmat::SegmentVisibility). */
   using SegmentVisibility = segmat::SegmentVisibility;
 
   /** \brief Defaults of the paper: δ0 = 0.015, η = 0.002, α = 0.05, λ = 1.5, 3 merge rounds. */

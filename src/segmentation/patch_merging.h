@@ -4,6 +4,8 @@
  */
 #pragma once
 
+#include <segmat/segmentation/mat_region_growing.h> // SegmentVisibility
+
 #include <Eigen/Core>
 
 #include <cstdint>
@@ -13,11 +15,6 @@
 #include <vector>
 
 namespace segmat {
-
-/** \brief Returns true when the straight segment between two points does not cross the shape's
- * surface (the points "see" each other).
- */
-using SegmentVisibility = std::function<bool(const Eigen::Vector3d&, const Eigen::Vector3d&)>;
 
 /** \brief The radius marks of SEG-MAT's patch signatures (the authors' `getPatchSignature`):
  * intervals + 1 marks r_min + k·spacing over the radius range of the whole base MAT.

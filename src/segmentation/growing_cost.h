@@ -4,7 +4,7 @@
  */
 #pragma once
 
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/medial/mat_graph.h>
 
 #include <Eigen/Core>
 
