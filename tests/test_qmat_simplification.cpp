@@ -36,7 +36,7 @@ simplify(const MedialMesh& in, int base, int structured, bool preserve_cavities 
   q.setInputMat(share(in));
   q.setBaseTarget(base);
   q.setStructuredTarget(structured);
-  q.setPreserveCavities(preserve_cavities);
+  q.setPreserveCavitiesFlag(preserve_cavities);
   MedialMesh b, s;
   EXPECT_TRUE(q.compute(b, s));
   return {b, s};
@@ -439,7 +439,7 @@ TEST(QmatSimplification, TeddyBaseMatToFifteenSpheres)
   EXPECT_LT(farthestNearest(structured, reference), 0.1 * diagonal);
 
   // The full link condition keeps the 7 cavities and cannot get anywhere near 15 spheres.
-  q.setPreserveCavities(true);
+  q.setPreserveCavitiesFlag(true);
   MedialMesh strict_base, strict_structured;
   ASSERT_TRUE(q.compute(strict_base, strict_structured));
   EXPECT_EQ(bettiNumbers(strict_structured).b2, 7);

@@ -42,7 +42,7 @@ class WindingNumber;
  *    bounds a 2-chain of triangles near ab (first a cone from one vertex, then a GF(2) solve over
  *    the triangles within 1, then 2 rings of a and b; 4 rings once nothing else can collapse).
  *    Such a cycle is null-homologous, so b1 is unchanged (b2 may grow by one; that cavity closes
- *    later). setPreserveCavities(true) enforces the full link condition instead. Blocked edges
+ *    later). setPreserveCavitiesFlag(true) enforces the full link condition instead. Blocked edges
  *    are retried whenever their neighbourhood changes;
  *  - the inversion check (inverted in the published code) takes the cheapest candidate among m*,
  *    both ends and the midpoint that flips no neighbouring triangle (making one degenerate
@@ -134,18 +134,18 @@ public:
   double getBoundaryWeight() const { return boundary_weight_; }
 
   /** \brief Reject target spheres that flip a neighbouring triangle (default true). */
-  void setPreventInversion(bool on) { prevent_inversion_ = on; }
+  void setPreventInversionFlag(bool on) { prevent_inversion_ = on; }
   /** \brief Whether the inversion check is on. */
-  bool getPreventInversion() const { return prevent_inversion_; }
+  bool getPreventInversionFlag() const { return prevent_inversion_; }
 
   /** \brief Enforce the full link condition, keeping every closed cavity (2-cycle) of the
    * medial complex (default false: components and tunnels/holes are kept, cavities may close;
    * see the class description). The MAT of a solid without inner voids has no cavity; those of a
    * Voronoi MAT are spurious and block the simplification when kept.
    */
-  void setPreserveCavities(bool on) { preserve_cavities_ = on; }
+  void setPreserveCavitiesFlag(bool on) { preserve_cavities_ = on; }
   /** \brief Whether cavities are kept. */
-  bool getPreserveCavities() const { return preserve_cavities_; }
+  bool getPreserveCavitiesFlag() const { return preserve_cavities_; }
 
   /** \brief Threads for the first evaluation of every edge's cost (default 1; 0: OpenMP's
    * default). The collapse loop itself is sequential; the output does not depend on it. */
