@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs segmat's build dependencies (Debian 12 packages) when any is missing. Needs root.
+# Extra packages may be named as arguments (test.sh adds doxygen for the API-reference test).
 set -euo pipefail
 packages=(cmake g++ make libpcl-dev libeigen3-dev libboost-graph-dev libflann-dev libgtest-dev
-          libqhull-dev liblz4-dev)
+          libqhull-dev liblz4-dev "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
