@@ -25,16 +25,16 @@
  *   --eta F / --omega F set the minimal region fraction η / the transfer smoothness ω
  *   (setMinRegionFraction / setSmoothnessWeight; defaults: the library's).
  *   --consensus-runs N segmentations of a noisy cloud to take the consensus of
- *   (CloudSegmentation::setConsensusRuns; 1: a single run as before the consensus).
+ *   (CloudSegmentation::setConsensusRuns; 1: a single run).
  *   --consensus-merge F co-association above which each consensus run's adjacent parts merge
  *   before the medoid is chosen (CloudSegmentation::setConsensusMergeThreshold; 2: none).
  *   --merge-reproduced-cuts lets the kept run's merge join cuts that a third of the runs make
- *   alike, as before the twentieth pass (setConsensusKeepReproducedCutsFlag(false)).
+ *   alike (setConsensusKeepReproducedCutsFlag(false)).
  *   --noisy-boundary-merge F  κ of the long-boundary merge for noisy clouds
  *   (CloudSegmentation::setNoisyBoundaryMergeFactor; 0: off).
  *   --keep-inside keeps Q-MAT's merged centres inside the surface for every cloud;
- *   --noisy-centres-outside lets them leave it for noisy clouds too, as before the eighteenth
- *   pass (CloudSegmentation::setNoisyCentresInsideFlag(false)).
+ *   --noisy-centres-outside lets them leave it for noisy clouds too
+ *   (CloudSegmentation::setNoisyCentresInsideFlag(false)).
  */
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"

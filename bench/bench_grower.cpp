@@ -4,7 +4,7 @@
 #include <segmat/geometry/medial_mesh.h>
 #include <segmat/io/ma.h>
 #include <segmat/io/off.h>
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/medial/mat_graph.h>
 #include <segmat/segmentation/mat_region_growing.h>
 #include <segmat/segmentation/structure_tags.h>
 

@@ -1,12 +1,10 @@
 #!/usr/bin/env bash
 # Installs segmat's build dependencies (Debian 12 packages) when any is missing. Needs root.
-# Pictures (segmat_render) need VTK (libvtk9-dev, also pulled in by libpcl-dev) and, with no
-# display, Xvfb with Mesa's software OpenGL (xvfb, libgl1-mesa-dri); segmat_batch needs
-# python3; the batch report's test opens the report in chromium.
+# Extra packages may be named as arguments: scripts/test.sh adds what the optional parts and
+# their tests need (see SEGMAT_TEST_PACKAGES there).
 set -euo pipefail
 packages=(cmake g++ make libpcl-dev libeigen3-dev libboost-graph-dev libflann-dev libgtest-dev
-          libqhull-dev liblz4-dev libvtk9-dev python3 xvfb libgl1-mesa-dri chromium
-          python3-dev pybind11-dev python3-numpy python3-pytest python3-open3d)
+          libqhull-dev liblz4-dev "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

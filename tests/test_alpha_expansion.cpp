@@ -1,5 +1,5 @@
 // α-expansion against brute-force enumeration and hand-solved problems.
-#include <segmat/segmentation/alpha_expansion.h>
+#include <segmat/graph_cut/alpha_expansion.h>
 
 #include <gtest/gtest.h>
 #include <pcl/console/print.h>

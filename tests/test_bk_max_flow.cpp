@@ -1,5 +1,5 @@
 // Boykov–Kolmogorov max-flow against a hand-solved network and brute-force minimum cuts.
-#include <segmat/segmentation/bk_max_flow.h>
+#include "../src/graph_cut/bk_max_flow.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 #include <segmat/common/point_types.h>
 #include <segmat/geometry/medial_mesh.h>
 #include <segmat/geometry/triangle_mesh.h>
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/medial/mat_graph.h>
 
 #include <gtest/gtest.h>
 #include <pcl/point_cloud.h>

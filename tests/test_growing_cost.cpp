@@ -1,7 +1,7 @@
-// Growing-cost terms (SEG-MAT §4.3, reference-facts §3.5) on hand-worked node pairs.
+// Growing-cost terms (SEG-MAT §4.3) on hand-worked node pairs.
 #include <segmat/geometry/medial_mesh.h>
-#include <segmat/segmentation/growing_cost.h>
-#include <segmat/segmentation/mat_graph.h>
+#include "../src/segmentation/growing_cost.h"
+#include <segmat/medial/mat_graph.h>
 
 #include <gtest/gtest.h>
 

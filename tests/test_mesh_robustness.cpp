@@ -262,11 +262,9 @@ TEST(MeshFromMeshAlone, TeddyGoldenAndDeterministic)
   EXPECT_EQ(seg.getStageSeconds()[1].first, "mat");
   EXPECT_GT(seg.getStageSeconds()[1].second, 0.0);
 
-  // Reference SEG-MAT with the authors' MATs (reference-facts §7): 8 parts of these sizes. Ours
-  // from the mesh alone: 8291 3646 1965 1923 1007 975 643 642. Each part within 5 % of the
-  // reference, or within 0.5 % of the faces (95) for the small ones: the smallest part is 68
-  // faces (12 %) larger with the computed MATs. (That was with the reference's crease cost;
-  // with the default CreaseModel::SharpConcave: 8076 3586 2004 1967 1089 1078 653 639.)
+  // The authors' program with their own MATs gives 8 parts of these sizes. From the mesh alone
+  // each part is within 5 % of it, or within 0.5 % of the faces (95) for the small ones (the
+  // computed MATs make the smallest part larger).
   const std::vector<double> reference{8213, 3733, 1963, 1923, 1033, 1015, 638, 574};
   const std::vector<std::size_t> counts = faceCounts(labels);
   ASSERT_EQ(counts.size(), reference.size());
@@ -275,8 +273,6 @@ TEST(MeshFromMeshAlone, TeddyGoldenAndDeterministic)
                 std::max(0.05 * reference[k], 0.005 * 19092))
         << "part " << k;
   // Golden value: update only with a deliberate change of the algorithm, saying why.
-  // Changed deliberately with the default crease cost (CreaseModel::SharpConcave; RI against
-  // the 13 humans 0.0490 → 0.0455).
   EXPECT_EQ(test::labelHash(labels), 2306403232867838543ull) << "labels changed";
 
   // The computed MATs are kept: a second segment() on the same object does not recompute them.

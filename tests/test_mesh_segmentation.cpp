@@ -79,7 +79,7 @@ TEST(MeshSegmentation, TeddyMatchesTheReferenceParts)
   ASSERT_TRUE(seg.segment(labels));
   ASSERT_EQ(labels.size(), 19092u);
 
-  // Reference run (reference-facts §7): 8 parts, face counts sorted descending.
+  // The authors' program on teddy: 8 parts, face counts sorted descending.
   const std::vector<double> reference{8213, 3733, 1963, 1923, 1033, 1015, 638, 574};
   const std::vector<std::size_t> counts = faceCounts(seg);
   ASSERT_EQ(counts.size(), reference.size());

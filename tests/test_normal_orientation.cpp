@@ -334,7 +334,7 @@ TEST(CloudPreprocessing, SetsIsolatedPointsAsideButKeepsSparseRegions)
 {
   // A unit sphere whose upper half is sampled 25 times more sparsely (5 times the spacing, as
   // a scan's far side), plus five flying points 3 units out, each on its own. (A clump of flying
-  // points close together is not isolated and stays: README, "Limits".)
+  // points close together is not isolated and stays.)
   const auto sphere = sphereCloud(20000, 4).toPointNormal();
   pcl::PointCloud<pcl::PointNormal>::Ptr cloud(new pcl::PointCloud<pcl::PointNormal>);
   std::size_t upper = 0;

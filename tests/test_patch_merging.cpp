@@ -1,6 +1,6 @@
 // Radius histograms, EMD, patch adjacency, Monte-Carlo visibility and merge rounds
-// (reference-facts §3.8, §3.9).
-#include <segmat/segmentation/patch_merging.h>
+// (SEG-MAT §4.4).
+#include "../src/segmentation/patch_merging.h"
 
 #include <gtest/gtest.h>
 

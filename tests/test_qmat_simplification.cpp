@@ -36,7 +36,7 @@ simplify(const MedialMesh& in, int base, int structured, bool preserve_cavities 
   q.setInputMat(share(in));
   q.setBaseTarget(base);
   q.setStructuredTarget(structured);
-  q.setPreserveCavities(preserve_cavities);
+  q.setPreserveCavitiesFlag(preserve_cavities);
   MedialMesh b, s;
   EXPECT_TRUE(q.compute(b, s));
   return {b, s};
@@ -389,7 +389,7 @@ TEST(QmatSimplification, Deterministic)
 TEST(QmatSimplification, TeddyBaseMatToFifteenSpheres)
 {
   // The authors' teddy base MAT (2000 spheres, 7 spurious cavities) simplified to 15 spheres,
-  // compared with their own 15-sphere structured MAT (reference-facts §1, §8.6): same topology
+  // compared with their own 15-sphere structured MAT (shipped in data/teddy): same topology
   // class (one component, no loop, no cavity), every one of their spheres has one of ours within
   // 10 % of the diagonal and vice versa, all our centres inside the surface.
   const std::string dir = std::string(SEGMAT_DATA_DIR) + "/teddy/";
@@ -439,7 +439,7 @@ TEST(QmatSimplification, TeddyBaseMatToFifteenSpheres)
   EXPECT_LT(farthestNearest(structured, reference), 0.1 * diagonal);
 
   // The full link condition keeps the 7 cavities and cannot get anywhere near 15 spheres.
-  q.setPreserveCavities(true);
+  q.setPreserveCavitiesFlag(true);
   MedialMesh strict_base, strict_structured;
   ASSERT_TRUE(q.compute(strict_base, strict_structured));
   EXPECT_EQ(bettiNumbers(strict_structured).b2, 7);

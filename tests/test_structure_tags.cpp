@@ -1,7 +1,7 @@
-// Thin-part detection on a structured MAT and transfer to base nodes (reference-facts §3.2, §3.4).
+// Thin-part detection on a structured MAT and transfer to base nodes (SEG-MAT §4.2).
 #include <segmat/geometry/medial_mesh.h>
 #include <segmat/io/ma.h>
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/medial/mat_graph.h>
 #include <segmat/segmentation/structure_tags.h>
 
 #include <gtest/gtest.h>
@@ -170,7 +170,7 @@ TEST(StructureTags, EmptyStructuredMatTagsEverythingBulky)
 
 TEST(StructureTags, TeddyHasNoThinPart)
 {
-  // Reference run (reference-facts §7): teddy's structured MAT (4 triangles + 9 pure edges) has
+  // The authors' program on teddy: teddy's structured MAT (4 triangles + 9 pure edges) has
   // 8 normal components and no thin part, so every base tag is 0.
   const std::string dir = std::string(SEGMAT_DATA_DIR) + "/teddy/";
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR); // the smat's header is wrong

@@ -352,7 +352,7 @@ TEST(VoronoiMat, SampleLimitThinsDenseMeshes)
 
 TEST(VoronoiMat, TeddyVerticesMatchQMatReference)
 {
-  // Q-MAT's initial MAT of the 9548 teddy vertices (CGAL, reference-facts §8.1): 32,486 vertices,
+  // Q-MAT's initial MAT of the 9548 teddy vertices (CGAL, the authors' program): 32,486 vertices,
   // 94,784 edges, 62,299 faces. qhull with a 1e-6 jitter and the winding-number inside test land
   // within 1 % of it.
   const std::string path = std::string(SEGMAT_DATA_DIR) + "/teddy/teddy.off";

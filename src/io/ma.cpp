@@ -79,7 +79,7 @@ loadMa(const std::string& path)
     file.failFile("empty file");
 
   // Optional header "NV NE NF": SEG-MAT's reader ignores it, Q-MAT's trusts it; real files have
-  // wrong ones (reference-facts §1, teddy_smat.ma), so it is only compared at the end.
+  // wrong ones (teddy_smat.ma), so it is only compared at the end.
   long header[3] = {-1, -1, -1};
   bool has_header = false;
   Tokens first(line);
@@ -133,7 +133,7 @@ loadMa(const std::string& path)
                     [&](int k, std::string_view t) { f[k] = file.parseInt(t, "index"); });
       triangles.push_back({f, file.lineNumber()});
     } else if (token == "n") {
-      // Per-sphere normals of SEG-MAT's point-cloud path (§6.5): checked, then dropped, since
+      // Per-sphere normals of SEG-MAT's unused point-cloud path: checked, then dropped, since
       // MedialMesh holds no normals.
       readValues<3>(file, tokens, "n",
                     [&](int, std::string_view t) { file.parseFinite(t, "normal component"); });
@@ -170,7 +170,7 @@ saveMa(const std::string& path, const MedialMesh& mat)
   // Shortest round-trip text (std::to_chars): reading it back gives the same doubles bit for bit.
   for (std::size_t v = 0; v < mat.numVertices(); ++v)
     detail::appendLine(text, "v", mat.sphere(static_cast<int>(v)));
-  // Every edge, sides of triangles included, as Q-MAT writes them (reference-facts §1).
+  // Every edge, sides of triangles included, as Q-MAT writes them.
   for (const Eigen::Vector2i& e : mat.edges())
     detail::appendLine(text, "e", e);
   for (const Eigen::Vector3i& f : mat.triangles())

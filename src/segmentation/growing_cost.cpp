@@ -3,7 +3,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <segmat/geometry/medial_primitives.h>
-#include <segmat/segmentation/growing_cost.h>
+#include "growing_cost.h"
 
 #include <Eigen/Geometry>
 
@@ -177,7 +177,7 @@ radiusCost(const MatNode& a, const MatNode& b)
   const double lo = std::min(a.mean_radius, b.mean_radius);
   const double hi = std::max(a.mean_radius, b.mean_radius);
   if (!(lo > 0.0))
-    return hi == 0.0 ? 0.0 : kInf; // guard r̄ = 0 (reference-facts §6.4)
+    return hi == 0.0 ? 0.0 : kInf; // guard r̄ = 0
   return hi / lo - 1.0;
 }
 
@@ -203,8 +203,8 @@ double
 combineGrowingCost(double radius_cost, double angle_cost, double primitive_cost,
                    const GrowingCostWeights& weights)
 {
-  // A NaN term (NaN input data) makes the whole cost +inf: NaN never means "grow" (fix of
-  // reference-facts §3.5, where NaN failed the rejecting comparison and so accepted the node).
+  // A NaN term (NaN input data) makes the whole cost +inf: NaN never means "grow" (in
+  // the authors' code NaN failed the rejecting comparison and so accepted the node).
   const bool use_primitive = weights.use_primitive_term;
   if (std::isnan(radius_cost) || std::isnan(angle_cost) ||
       (use_primitive && std::isnan(primitive_cost)))

@@ -83,7 +83,8 @@ computeCreaseCost(const Eigen::Vector3d& centre_a, const Eigen::Vector3d& normal
   const Eigen::Vector3d step = centre_b - centre_a;
   const bool concave = step.dot(normal_a - normal_b) > 1e-6 * step.norm(); // NaN → convex
   double per_registration = omega * ((concave ? 180.0 : 360.0) - theta) / 180.0;
-  if (concave && model == CreaseModel::SharpConcave) // fixes the θ = 0 jump (§6.2) on purpose
+  // No jump at θ = 0, on purpose (docs/method.md).
+  if (concave && model == CreaseModel::SharpConcave)
     per_registration = 2.0 * omega * std::exp(-theta / kConcaveCreaseAngle);
   // Truncated like the reference's int(), with a little slack so that exact angles (flat, 90°)
   // are not pushed one unit down by round-off in acos. The reference registered every adjacency

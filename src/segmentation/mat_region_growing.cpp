@@ -2,10 +2,10 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  */
-#include <segmat/segmentation/growing_cost.h>
+#include "growing_cost.h"
 #include <segmat/common/checked_setter.h>
 #include <segmat/segmentation/mat_region_growing.h>
-#include <segmat/segmentation/patch_merging.h>
+#include "patch_merging.h"
 
 #include "../common/point_kd_tree.h"
 
@@ -90,11 +90,11 @@ spheresOf(const MatGraph& g, const std::vector<int>& nodes)
   return s;
 }
 
-/** Tiny-patch absorption (MergeTinyPatches, reference-facts §3.7). Each tiny patch joins the
+/** Tiny-patch absorption (the authors' `MergeTinyPatches`). Each tiny patch joins the
  * dense patch that overlaps it (some pair of spheres with |c1 − c2| < r1 + r2) with the lowest
  * score 0.5·EMD_norm + 0.5·distance_norm, both min–max normalised over the candidates (a term
  * with max == min counts 0). Fixes: a single candidate is taken (the reference skipped it and
- * left the patch unassigned), equal distances no longer give 0/0, ties go to the lower patch.
+ * left the patch unassigned), equal distances give 0 (not 0/0), ties go to the lower patch.
  * Without a candidate the patch joins the dense patch with the nearest sphere centre. Scores are
  * computed against the dense patches as grown, so the result does not depend on the order in
  * which tiny patches are absorbed.
@@ -259,7 +259,7 @@ graphEdgePairs(const MatGraph& g, const std::vector<Patch>& patches)
   return pairs;
 }
 
-/** Merging rounds (MergeIterations, reference-facts §3.9). EMD_max is taken once, over all pairs
+/** Merging rounds (the authors' `MergeIterations`). EMD_max is taken once, over all pairs
  * of the patches entering round 1, as in the reference. A merged patch takes the place of its
  * lowest member and concatenates the members' nodes in patch order.
  */
@@ -429,7 +429,8 @@ MatRegionGrowing::extract(std::vector<pcl::PointIndices>& parts)
   weights.lambda = lambda_;
   weights.use_primitive_term = use_primitive_term_ && g.hasPrimitives();
 
-  // η counts spheres (base-MAT vertices), not nodes (reference-facts §3.6); at least one node.
+  // η counts spheres (base-MAT vertices), not nodes, as the authors' `RegionGrowing`; at least
+  // one node.
   const int min_region =
       std::max(1, static_cast<int>(eta_ * static_cast<double>(g.numSpheres())));
 
@@ -547,9 +548,9 @@ MatRegionGrowing::extract(std::vector<pcl::PointIndices>& parts)
       patches.push_back({t, t});
     tiny.clear();
   }
-  // 5 % of the graph: on clean shapes leftovers are details (Mech 321's box edges: 40–80 of
-  // ~3 500 nodes) that belong whole to the part they touch, as in the reference; under noise
-  // they are 300–900 nodes (README, "Ninth pass").
+  // 5 % of the graph: on clean shapes leftovers are small details (a box's edges) that belong
+  // whole to the part they touch, as in the reference; under noise a leftover can span several
+  // parts and is split.
   splitLargeLeftovers(g, tiny, patches, std::max<std::size_t>(2, g.numNodes() / 20));
   absorbTinyPatches(g, tiny, binning, index, patches);
   mergePatches(g, binning, merge_rounds_, visibility_, shared_boundary_factor_, seed_, patches);

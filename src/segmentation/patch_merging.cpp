@@ -2,7 +2,7 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  */
-#include <segmat/segmentation/patch_merging.h>
+#include "patch_merging.h"
 
 #include <boost/pending/disjoint_sets.hpp>
 
@@ -14,9 +14,8 @@ namespace segmat {
 namespace {
 
 /// Shortest box diagonal, in median radii, of the spheres that two patches share for the
-/// long-boundary merge. In noisy clouds (bench_cloud_psb condition (c), a temporary print) the
-/// pairs it joined spanned 2.9–6.3 on Human 1 (limbs at their joints) and 2.8–23, most above 6,
-/// on Glasses 41 (rims cut by noise); of 6 and 8, 8 scored better.
+/// long-boundary merge: a joint between two limbs shares a short, round set of spheres, while a
+/// part that noise cut in two shares a long one.
 constexpr double kMinSpanInRadii = 8.0;
 
 /** Uniform double in [0, 1) from two raw 32-bit outputs (53 bits, library-independent). */

@@ -3,7 +3,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <segmat/geometry/medial_mesh.h>
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/medial/mat_graph.h>
 #include <segmat/segmentation/structure_tags.h>
 
 #include <Eigen/Geometry>
@@ -16,7 +16,7 @@
 namespace segmat {
 namespace {
 
-// Constants of the reference (reference-facts §3.2, §4).
+// Constants of the authors' `StructureDecompose`.
 constexpr double kThinRatio = 8.0;          // ρ above this: thin part
 constexpr double kDroppedLineRatio = 100.0; // line components above this take no part
 constexpr double kCollinearBranch = 0.95;   // |cos| joining two lines through a branch point

@@ -2,7 +2,7 @@
 #pragma once
 
 #include <segmat/geometry/medial_mesh.h>
-#include <segmat/segmentation/patch_merging.h>
+#include "../../src/segmentation/patch_merging.h"
 
 #include <Eigen/Core>
 

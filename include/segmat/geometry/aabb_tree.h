@@ -15,7 +15,7 @@ namespace segmat {
 
 /** \brief A static bounding-volume hierarchy of axis-aligned boxes over a triangle mesh, for
  * segment–surface intersection tests (the visibility test of SEG-MAT's merging, which used
- * CGAL's AABB tree; reference-facts §3.9).
+ * CGAL's AABB tree in the authors' code).
  *
  * Built once (median split on the longest axis, small leaves); queries are const and may run
  * from several threads. Degenerate (zero-area) faces are left out.

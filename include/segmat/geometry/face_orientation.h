@@ -14,7 +14,7 @@ namespace segmat {
  *
  * Real meshes are not always consistently wound, and the graph-cut smoothness of SEG-MAT tells
  * concave from convex edges with the face normals, assuming outward orientation
- * (reference-facts §3.10). Faces are propagated breadth-first over manifold edges (edges with
+ * (the authors' `smoothFn`). Faces are propagated breadth-first over manifold edges (edges with
  * exactly two faces), in face order: a neighbour whose shared edge runs the same way as in the
  * current face is flipped. Each connected component is then turned so that its signed volume,
  * taken about the component's centroid, is >= 0 (faces with a non-finite corner left out).

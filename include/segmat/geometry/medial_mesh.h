@@ -15,7 +15,7 @@ namespace segmat {
  * edges (medial cones) and triangles (medial slabs).
  *
  * Identity is by index, never by coordinates (the reference code merged spheres with equal
- * centres; reference-facts §3.1). The constructor normalises the complex once and derives the
+ * centres). The constructor normalises the complex once and derives the
  * incidence every later stage needs:
  *  - triangles with a repeated index and edges with equal ends are dropped, duplicates removed;
  *  - every side of every triangle is an edge (added when the input lacked it);
@@ -71,7 +71,7 @@ public:
   /** \brief Index of edge (a, b) in either order, or -1. */
   int findEdge(int a, int b) const;
 
-  /** \brief Diagonal of the bounding box of the sphere centres (SEG-MAT's normaliser, §3.1). */
+  /** \brief Diagonal of the bounding box of the sphere centres (SEG-MAT's normaliser). */
   double centerBoundingBoxDiagonal() const;
   /** \brief Largest radius (0 when empty). */
   double maxRadius() const;

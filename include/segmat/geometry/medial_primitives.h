@@ -46,7 +46,7 @@ computeSlabSides(const Eigen::Vector3d c[3], const double r[3], const Eigen::Vec
  * axis, positive when the cone narrows towards c_to.
  *
  * The asin argument is clamped to [−1, 1] (one sphere inside the other gives ±π/2) and equal
- * radii give exactly 0 (sign(0) = 0; the reference computed 0/0 here, reference-facts §6.3).
+ * radii give exactly 0 (sign(0) = 0; the reference computed 0/0 here).
  * Coincident centres give 0.
  */
 double

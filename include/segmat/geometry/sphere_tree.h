@@ -15,7 +15,7 @@ namespace segmat {
 /** \brief A bounding-volume tree over a set of spheres that answers, exactly, the smallest
  * signed distance from a query point to the spheres' surfaces: min_i (|q − c_i| − r_i).
  *
- * This is SEG-MAT's point-to-part distance (reference-facts §3.7 and §3.10: the graph-cut data
+ * This is SEG-MAT's point-to-part distance (the graph-cut data
  * term and the tiny-patch distance); a negative value means q lies inside some sphere. Each node
  * of the tree keeps the box of its centres and its largest radius, so |q − box| − r_max bounds
  * every sphere below it; branch-and-bound then visits a few dozen spheres instead of all.

@@ -18,8 +18,8 @@ namespace segmat {
  * than `max_spacing`.
  *
  * Mesh vertices carry the detail a modeller put in (thin parts, sharp features); the extra
- * points only fill long edges and big triangles, which plain vertex sampling (Q-MAT's initial MAT,
- * reference-facts §8.1) leaves too sparse for a faithful Voronoi medial axis.
+ * points only fill long edges and big triangles, which plain vertex sampling (Q-MAT's initial
+ * MAT) leaves too sparse for a faithful Voronoi medial axis.
  *  - Each mesh edge longer than h = `max_spacing` is split evenly into ceil(L / h) parts (the
  *    points are made once per edge, so neighbouring faces share them).
  *  - Each triangle gets the points of a triangular lattice of spacing h in its plane (rows parallel

@@ -12,7 +12,7 @@
 namespace segmat {
 namespace io {
 
-/** \brief Reads a Q-MAT `.ma` medial mesh (reference-facts §1).
+/** \brief Reads a Q-MAT `.ma` medial mesh (format: docs/file-formats.md).
  *
  * Parsed by tag (`v x y z r`, `e i j`, `f i j k`, optional `n nx ny nz`) until the end of file;
  * the header counts are checked and a mismatch only warns (real files have wrong headers).

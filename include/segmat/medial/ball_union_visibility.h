@@ -18,7 +18,7 @@ namespace segmat {
  * balls: the segment between them must stay inside the union of the balls.
  *
  * SEG-MAT merges two parts only when enough segments between their balls cross no surface
- * (reference-facts §3.9; the mesh path tests the segments against the triangles). A cloud has
+ * (SEG-MAT §4.4; the mesh path tests the segments against the triangles). A cloud has
  * no triangles, but its medial balls cover its interior, so "crosses no surface" becomes "never
  * leaves the union of the balls". The test sphere-traces the segment: at a point q, with
  * d = min_i (|q − c_i| − ρ·r_i) (segmat::SphereTree), d ≤ 0 means q is inside, and the ball of

@@ -102,8 +102,7 @@ public:
 
   /** \brief Keep every merged sphere centre inside the surface (default true; see
    * QmatSimplification::setInputSurface). Costs one O(log F) face-crossing count per collapse,
-   * about 0.05–0.1 s on a 30k-face shape; without it a few centres of thin parts (9 of 76,000
-   * over the 38 PSB shapes) end up outside. */
+   * small next to the simplification; without it a few centres of thin parts end up outside. */
   void setKeepCentresInside(bool on) { keep_centres_inside_ = on; }
   /** \brief Whether merged centres are kept inside the surface. */
   bool getKeepCentresInside() const { return keep_centres_inside_; }

@@ -5,7 +5,7 @@
 #pragma once
 
 #include <segmat/common/point_types.h>
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/medial/mat_graph.h>
 
 #include <pcl/point_cloud.h>
 

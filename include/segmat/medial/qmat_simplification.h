@@ -20,15 +20,15 @@ class WindingNumber;
  * MAT (default 2000 spheres) and, continuing the same collapse sequence, the *structured* MAT
  * (default max(15, ⌊0.001 × initial spheres⌋)) (Lin et al., SEG-MAT, TVCG 2022, §3).
  *
- * Edge collapses in order of the cost (Q(m*) + k)·ratio² (§8.4 of reference-facts): Q is the
- * sphere quadric error (SphereQuadric) of the slab tangent planes of every triangle, plus
+ * Edge collapses in order of the cost (Q(m*) + k)·ratio² (Q-MAT's `EvaluateEdgeCollapseCost`): Q
+ * is the sphere quadric error (SphereQuadric) of the slab tangent planes of every triangle, plus
  * boundary terms on sheet borders and pure edges; ratio is the stability ratio, so spikes
  * (one sphere inside the other) go first. Work is done in coordinates divided by a
  * normalisation scale (Q-MAT: the surface's bounding-box diagonal), so k and the weights mean the
  * same on every shape.
  *
- * Differences from the published code, all deliberate (reference-facts §8.3–8.5):
- *  - a real topology check (the published code calls none, §8.5). An edge (a, b) collapses when
+ * Differences from the published code, all deliberate:
+ *  - a real topology check (the published code calls none). An edge (a, b) collapses when
  *    the link condition Lk(a) ∩ Lk(b) = Lk(ab) holds on the simplicial 2-complex of spheres,
  *    edges and triangles (Dey et al. 1999; Attali, Lieutier and Salinas 2012: the collapse then
  *    keeps the homotopy type). In a 2-complex it reads: (i) every common neighbour x of a and b
@@ -42,7 +42,7 @@ class WindingNumber;
  *    bounds a 2-chain of triangles near ab (first a cone from one vertex, then a GF(2) solve over
  *    the triangles within 1, then 2 rings of a and b; 4 rings once nothing else can collapse).
  *    Such a cycle is null-homologous, so b1 is unchanged (b2 may grow by one; that cavity closes
- *    later). setPreserveCavities(true) enforces the full link condition instead. Blocked edges
+ *    later). setPreserveCavitiesFlag(true) enforces the full link condition instead. Blocked edges
  *    are retried whenever their neighbourhood changes;
  *  - the inversion check (inverted in the published code) takes the cheapest candidate among m*,
  *    both ends and the midpoint that flips no neighbouring triangle (making one degenerate
@@ -112,7 +112,8 @@ public:
   int getBaseTarget() const { return base_target_; }
 
   /** \brief Number of spheres of the structured MAT.
-   * \param[in] n >= 1, or −1 (default) for max(15, ⌊0.001 × initial spheres⌋) (SEG-MAT README).
+   * \param[in] n >= 1, or −1 (default) for max(15, ⌊0.001 × initial spheres⌋) (the SEG-MAT
+   * authors' setting).
    * A value above the base target gives a structured MAT equal to the base MAT. When the
    * automatic target cannot be reached because the topology pins P spheres (islands, holes of
    * a noisy sheet), the structured MAT keeps P + target spheres instead of P (a deviation from
@@ -133,18 +134,18 @@ public:
   double getBoundaryWeight() const { return boundary_weight_; }
 
   /** \brief Reject target spheres that flip a neighbouring triangle (default true). */
-  void setPreventInversion(bool on) { prevent_inversion_ = on; }
+  void setPreventInversionFlag(bool on) { prevent_inversion_ = on; }
   /** \brief Whether the inversion check is on. */
-  bool getPreventInversion() const { return prevent_inversion_; }
+  bool getPreventInversionFlag() const { return prevent_inversion_; }
 
   /** \brief Enforce the full link condition, keeping every closed cavity (2-cycle) of the
    * medial complex (default false: components and tunnels/holes are kept, cavities may close;
    * see the class description). The MAT of a solid without inner voids has no cavity; those of a
    * Voronoi MAT are spurious and block the simplification when kept.
    */
-  void setPreserveCavities(bool on) { preserve_cavities_ = on; }
+  void setPreserveCavitiesFlag(bool on) { preserve_cavities_ = on; }
   /** \brief Whether cavities are kept. */
-  bool getPreserveCavities() const { return preserve_cavities_; }
+  bool getPreserveCavitiesFlag() const { return preserve_cavities_; }
 
   /** \brief Threads for the first evaluation of every edge's cost (default 1; 0: OpenMP's
    * default). The collapse loop itself is sequential; the output does not depend on it. */

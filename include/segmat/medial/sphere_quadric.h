@@ -15,7 +15,7 @@ namespace segmat {
  * of a sphere C = (c, r_c), with n̂ = (n, 1), the error of m is (n̂·(m − C))² = (n·(x − c) + r −
  * r_c)²: zero when m touches the plane from inside, d² when m pokes through it by d (for a unit
  * n). Sums of such terms are stored as Q(m) = ½·mᵀAm − bᵀm + c with A = 2·n̂n̂ᵀ,
- * b = 2·n̂(n̂·C), c = (n̂·C)² (reference-facts §8.3).
+ * b = 2·n̂(n̂·C), c = (n̂·C)² (Q-MAT, Li et al. 2015).
  */
 class SphereQuadric
 {
@@ -38,7 +38,7 @@ public:
 
   /** \brief The sphere minimising Q: A·m = b.
    * \param[out] m the minimiser
-   * \return false when |det A| <= 1e-12 (Q-MAT's Wm4 inverse tolerance, §8.7); m untouched.
+   * \return false when |det A| <= 1e-12 (Q-MAT's Wm4 inverse tolerance); m untouched.
    */
   bool
   minimiser(Eigen::Vector4d& m) const;
@@ -87,7 +87,7 @@ private:
   double v_[kSize] = {};
 };
 
-/** \brief Q-MAT's stability ratio of a medial edge (reference-facts §8.4,
+/** \brief Q-MAT's stability ratio of a medial edge (Q-MAT's
  * `GetRatioHyperbolicEuclid`).
  *
  * ratio = max(0, |c0 − c1| − |r0 − r1|) / |c0 − c1| ∈ [0, 1]: 1 for equal radii, 0 when one

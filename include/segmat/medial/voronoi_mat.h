@@ -51,7 +51,7 @@ struct VoronoiMatStatistics
  *    exact code fails, qhull is tried.
  * 3. A tetrahedron is inside when its circumcentre lies in the mesh's bounding box and has a
  *    generalised winding number above 0.5 (WindingNumber, robust to small holes and mixed
- *    orientation; Q-MAT's CGAL code used a point-in-polyhedron test, reference-facts §8.1).
+ *    orientation; Q-MAT's CGAL code used a point-in-polyhedron test).
  *    For a closed mesh the winding number is evaluated once per connected group of tetrahedra
  *    and carried across Voronoi edges by counting the faces they cross
  *    (WindingNumber::windingNumberChange), falling back to evaluation where that count is
@@ -61,7 +61,7 @@ struct VoronoiMatStatistics
  *    edges are Voronoi edges (dual to Delaunay facets) whose two tetrahedra are inside; medial
  *    faces are Voronoi faces (dual to Delaunay edges) whose whole ring of tetrahedra is finite and
  *    inside, fan-triangulated from the lowest-indexed tetrahedron of the ring, the fan's diagonals
- *    added as edges (§8.1, step 5).
+ *    added as edges (as Q-MAT's initial MAT).
  *
  * With `max_spacing` = 0 and no sample limit the samples are the mesh vertices alone, which is
  * Q-MAT's own input.

@@ -5,8 +5,8 @@
 #pragma once
 
 #include <segmat/geometry/triangle_mesh.h>
-#include <segmat/segmentation/alpha_expansion.h>
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/graph_cut/alpha_expansion.h>
+#include <segmat/medial/mat_graph.h>
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -23,7 +23,7 @@ namespace segmat {
  */
 constexpr double kTransferEnergyScale = 1e5;
 
-/** \brief Graph-cut data term of SEG-MAT (Lin et al. 2022, §5; reference-facts §3.10).
+/** \brief Graph-cut data term of SEG-MAT (Lin et al. 2022, §5; the authors' `transfer_MAT_mesh`).
  *
  * D(i, l) = ⌊ max(0, min_{s ∈ part l} (|x_i − c_s| − r_s)) / B · 1e5 ⌋, where s runs over the
  * spheres of part l's (coarse) MAT-graph nodes and B is the diagonal of the bounding box of all
@@ -48,23 +48,23 @@ computePartDistanceCosts(const std::vector<Eigen::Vector3d>& positions, const Ma
 enum class CreaseModel
 {
   /** SEG-MAT's `smoothFn`: 2·⌊ω·(180 − θ)/180 · 1e5⌋. Any concave pair, however shallow, costs
-   * at most half a flat edge (the jump at θ = 0, reference-facts §6.2), and a deep crease costs
+   * at most half a flat edge (the jump at θ = 0), and a deep crease costs
    * little less than a shallow one (90°: a quarter of a flat edge; 10°: 0.47). */
   Reference,
   /** 2·⌊2ω·exp(−θ/τ) · 1e5⌋ with τ = kConcaveCreaseAngle (10°): continuous at θ = 0, and the
    * price falls fast with the crease's depth (10°: 0.37 of a flat edge, 20°: 0.14, 45°: 0.011),
    * so a cut follows a real concave seam — where people cut (the minima rule) — rather than
-   * the shortest loop of noise-level concave edges. Not in SEG-MAT; on psb-dev it lowers the
-   * mean 1 − Rand index from 0.100 to 0.092 (README, "Segmentation quality"). */
+   * the shortest loop of noise-level concave edges. Not in SEG-MAT; the default (its effect on
+   * the PSB scores: docs/benchmarks.md). */
   SharpConcave
 };
 
 /** \brief Angle scale τ of CreaseModel::SharpConcave, in degrees: a concave crease of τ costs
- * 1/e of a flat edge. psb-dev scores (mean 1 − Rand) are flat for τ in 5°–20° (0.091–0.094).
+ * 1/e of a flat edge. The scores are insensitive to τ between 5° and 20°.
  */
 constexpr double kConcaveCreaseAngle = 10.0;
 
-/** \brief Cost of cutting between two surface elements (reference `smoothFn`, §3.10), both
+/** \brief Cost of cutting between two surface elements (the authors' `smoothFn`), both
  * registrations of the reference summed: with CreaseModel::Reference 2·⌊ω·(180 − θ)/180 · 1e5⌋
  * for a concave pair and 2·⌊ω·(360 − θ)/180 · 1e5⌋ for a convex or flat one, θ the angle
  * between the normals in degrees (CreaseModel::SharpConcave prices concave pairs differently).
@@ -74,7 +74,7 @@ constexpr double kConcaveCreaseAngle = 10.0;
  * 1e-6) made symmetric in a and b and free of the mesh's units (the reference evaluated it with
  * one face's normal only, and with an absolute tolerance). Needs outward normals.
  *
- * With CreaseModel::Reference the jump at θ = 0 is kept (reference-facts §6.2): any concave
+ * With CreaseModel::Reference the jump at θ = 0 is kept: any concave
  * crease, however shallow, costs at most half of a flat edge, and the data/smoothness balance
  * stays the one the authors tuned (the cloud transfer is calibrated on it).
  * Zero or non-finite normals give θ = 90° and count as convex: finite, never NaN.
@@ -125,7 +125,7 @@ computeCloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& clou
                             CreaseModel model = CreaseModel::Reference, unsigned int threads = 0);
 
 /** \brief Renumber labels densely (0..k−1) keeping their order; negative labels stay as they
- * are (unassigned). Absent labels disappear (reference post-processing, §3.10).
+ * are (unassigned). Absent labels disappear (as the authors' post-processing).
  * \return k, the number of distinct non-negative labels
  */
 int

@@ -4,8 +4,7 @@
  */
 #pragma once
 
-#include <segmat/segmentation/mat_graph.h>
-#include <segmat/segmentation/patch_merging.h>
+#include <segmat/medial/mat_graph.h>
 #include <segmat/segmentation/structure_tags.h>
 
 #include <Eigen/Core>
@@ -17,14 +16,20 @@
 
 namespace segmat {
 
+/** \brief Returns true when the straight segment between two points does not cross the shape's
+ * surface (the points "see" each other): the visibility test of the merging.
+ */
+using SegmentVisibility = std::function<bool(const Eigen::Vector3d&, const Eigen::Vector3d&)>;
+
 /** \brief Region growing on a MAT graph: the part-finding core of SEG-MAT (Lin et al. 2022, §4–5).
  *
- * Steps (reference-facts §3.5–§3.9), on a MatGraph built from a medial mesh (slabs and cones)
+ * Steps (SEG-MAT §4.3–4.4 and the authors' `RegionGrowing`, `MergeTinyPatches`,
+ * `MergeIterations`), on a MatGraph built from a medial mesh (slabs and cones)
  * or from a cloud's meso-skeleton (points with normals):
  *  1. seeds in order of decreasing mean radius (ties: smaller node index first);
  *  2. breadth-first growth: a neighbour j of the current node i joins when
  *     cost(i, j) = min(C_r + α·C_θ, λ·C_mp) <= t, with t = δ0 (both tags 0),
- *     δ0·tag_ratio (same thin part) or 0 (different tags); see growing_cost.h; and (not in
+ *     δ0·tag_ratio (same thin part) or 0 (different tags), see docs/method.md; and (not in
  *     the reference) when j is at most setMaxSeedRadiusRatio() times thinner than the seed;
  *  3. regions with fewer than N_min = max(1, int(η · number of spheres)) nodes are released;
  *     an accepted region swallows every free node that has a sphere centre strictly inside one
@@ -55,9 +60,7 @@ class MatRegionGrowing
 public:
   using Ptr = std::shared_ptr<MatRegionGrowing>;
   using ConstPtr = std::shared_ptr<const MatRegionGrowing>;
-  /** \brief Returns true when the straight segment between two points does not cross the shape's
-   * surface (the two points "see" each other); see patch_merging.h.
-   */
+  /** \brief The visibility test of the merging (segmat::SegmentVisibility). */
   using SegmentVisibility = segmat::SegmentVisibility;
 
   /** \brief Defaults of the paper: δ0 = 0.015, η = 0.002, α = 0.05, λ = 1.5, 3 merge rounds. */
@@ -157,7 +160,7 @@ public:
    *
    * The growing test compares neighbours only, so many small radius steps can carry one region
    * from the body far down a tapering limb. With this guard a node thinner than the seed by
-   * more than this factor is left for a later seed. Not in SEG-MAT; on psb-dev it splits
+   * more than this factor is left for a later seed. Not in SEG-MAT; it splits
    * tapering parts (a vase's neck, a human's limb) where the humans do.
    * \param[in] ratio a value >= 1; other values are rejected with a warning
    */
@@ -242,7 +245,8 @@ public:
   extract(std::vector<pcl::PointIndices>& parts);
 
   /** \brief Per final part, its grown ("coarse") nodes, ascending — the nodes the surface data
-   * term may use (reference-facts §3.10). Never empty for a part: when no region reaches the
+   * term may use (as the authors' `transfer_MAT_mesh`). Never empty for a part: when no region
+   * reaches the
    * minimal size, the leftover components become the parts and all their nodes count as coarse.
    * Valid after extract().
    */

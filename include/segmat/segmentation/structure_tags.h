@@ -39,7 +39,7 @@ struct StructureTags
 };
 
 /** \brief Thin-part detection on a structured MAT and transfer to the base graph
- * (reference-facts §3.2 and §3.4).
+ * (SEG-MAT §4.2; the authors' `StructureDecompose` and `transfer_SMAT_MAT`).
  *
  * The structured MAT (~15–40 spheres) is cut into components: lines are cut at branch points
  * unless the two lines are nearly collinear (|cos| > 0.95), sheets at non-manifold edges, and a

@@ -2,8 +2,8 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  */
-#include <segmat/segmentation/alpha_expansion.h>
-#include <segmat/segmentation/bk_max_flow.h>
+#include <segmat/graph_cut/alpha_expansion.h>
+#include "bk_max_flow.h"
 
 #include <pcl/console/print.h>
 

@@ -3,7 +3,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include <segmat/geometry/medial_mesh.h>
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/medial/mat_graph.h>
 #include "../geometry/point_bounds.h"
 
 #include <Eigen/Geometry>
@@ -60,7 +60,7 @@ MatGraph::fromMedialMesh(const MedialMesh& mat, double radius_gate)
     node.kind = MatNodeKind::Cone;
     node.v = Eigen::Vector3i(ed[0], ed[1], -1);
     node.mean_radius = 0.5 * (r[ed[0]] + r[ed[1]]);
-    // The reference used (2a+b)/3 for a cone's centroid (reference-facts §3.1); the midpoint is meant.
+    // The reference used (2a+b)/3 for a cone's centroid; the midpoint is meant.
     node.centroid = 0.5 * (c[ed[0]] + c[ed[1]]);
     node.normal = Eigen::Vector3d::Zero();
     nodes.push_back(node);

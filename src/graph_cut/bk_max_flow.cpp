@@ -2,7 +2,7 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  */
-#include <segmat/segmentation/bk_max_flow.h>
+#include "bk_max_flow.h"
 
 #include <algorithm>
 #include <limits>

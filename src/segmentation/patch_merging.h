@@ -4,6 +4,8 @@
  */
 #pragma once
 
+#include <segmat/segmentation/mat_region_growing.h> // SegmentVisibility
+
 #include <Eigen/Core>
 
 #include <cstdint>
@@ -14,13 +16,8 @@
 
 namespace segmat {
 
-/** \brief Returns true when the straight segment between two points does not cross the shape's
- * surface (the points "see" each other).
- */
-using SegmentVisibility = std::function<bool(const Eigen::Vector3d&, const Eigen::Vector3d&)>;
-
-/** \brief The radius marks of SEG-MAT's patch signatures (reference-facts §3.8): intervals + 1
- * marks r_min + k·spacing over the radius range of the whole base MAT.
+/** \brief The radius marks of SEG-MAT's patch signatures (the authors' `getPatchSignature`):
+ * intervals + 1 marks r_min + k·spacing over the radius range of the whole base MAT.
  */
 struct RadiusBinning
 {
@@ -36,7 +33,7 @@ makeRadiusBinning(const std::vector<double>& radii, int intervals = 20);
 /** \brief Normalised radius histogram of a set of spheres: each sphere counts 1/|spheres| at its
  * nearest mark (ties go to the lower mark).
  *
- * Fix of reference-facts §3.8: the reference kept adding to a patch's histogram across steps
+ * Deliberate difference: the authors' code kept adding to a patch's histogram across steps
  * (round-1 weights summed to more than 1); this histogram is always built fresh.
  * \param[in] spheres sphere indices (each counted once per occurrence; pass a unique set)
  * \return intervals + 1 weights summing to 1 (all 0 for an empty set)
@@ -71,7 +68,7 @@ sphereSharingPairs(const std::vector<std::vector<int>>& patch_spheres, std::size
 Eigen::Vector3d
 randomPointInBall(std::mt19937& engine, const Eigen::Vector3d& center, double radius);
 
-/** \brief Monte-Carlo visibility of two patches (checkPatchVisibility, reference-facts §3.9).
+/** \brief Monte-Carlo visibility of two patches (the authors' `checkPatchVisibility`).
  *
  * Every 3rd sphere of each patch contributes one random point inside it; the patches see each
  * other when at least ratio · (all point pairs) segments are visible (a degenerate segment is

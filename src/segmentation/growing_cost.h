@@ -4,7 +4,7 @@
  */
 #pragma once
 
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/medial/mat_graph.h>
 
 #include <Eigen/Core>
 
@@ -12,7 +12,8 @@
 
 namespace segmat {
 
-/** \brief Weights of the growing cost (SEG-MAT, Lin et al. 2022, §4.3; reference-facts §3.5). */
+/** \brief Weights of the growing cost (SEG-MAT, Lin et al. 2022, §4.3; the authors'
+ * `checkFaceGrowing`). */
 struct GrowingCostWeights
 {
   double alpha = 0.05;            ///< α, weight of the angle term C_θ
@@ -22,8 +23,8 @@ struct GrowingCostWeights
 
 /** \brief Radius term C_r = max(r̄_a, r̄_b) / min(r̄_a, r̄_b) − 1 (>= 0).
  *
- * Guards r̄ = 0 (reference-facts §6.4): two zero mean radii give 0, one gives +inf; a NaN radius
- * gives NaN.
+ * Guards r̄ = 0 (undefined in the authors' code): two zero mean radii give 0, one gives +inf; a
+ * NaN radius gives NaN.
  */
 double
 radiusCost(const MatNode& a, const MatNode& b);
@@ -35,7 +36,8 @@ radiusCost(const MatNode& a, const MatNode& b);
  *  - cone–cone: 180° minus the angle at the shared sphere between the two cones (0 = straight
  *    continuation, 1 = folded back); without a shared sphere the angle between the lines;
  *  - cone–slab: 180° − acos(|d·n|), in [½, 1] (½: the line lies in the slab's plane);
- *  - point–point (and point–slab): acos(|n_a·n_b|), in [0, ½] (reference-facts §6.5);
+ *  - point–point (and point–slab): acos(|n_a·n_b|), in [0, ½] (the authors' unused point-cloud
+ *    branch);
  *  - point–cone: as cone–slab, the point's normal standing for the sheet normal.
  * A zero normal or direction (degenerate slab, zero-length cone, point without normal) gives ½.
  * Fix of the reference: when the slabs are coplanar the reference vector lies in their plane and
@@ -56,9 +58,9 @@ angleCost(const MatNode& a, const MatNode& b, const std::vector<Eigen::Vector3d>
  *    (A+B)/2 when none, one or both of A, B are below 1 (a side that bends inwards counts as a
  *    primitive change: a neck scores ≈ 1). A or B within 1e-9 of 1 counts as 1, so that a
  *    straight cone or cylinder does not flip between 0 and ½ on rounding (a fix; the reference
- *    compares exactly). sign(0) = 0 and clamped asin: equal radii are defined (reference-facts
- *    §6.3). 1 when the cones share no sphere;
- *  - cone–slab: 1 (undefined in the reference, reference-facts §6.3); anything with a point: 1.
+ *    compares exactly). sign(0) = 0 and clamped asin: equal radii are defined (the authors'
+ *    code divides 0 by 0). 1 when the cones share no sphere;
+ *  - cone–slab: 1 (undefined in the authors' code); anything with a point: 1.
  */
 double
 primitiveCost(const MatNode& a, const MatNode& b, const std::vector<Eigen::Vector3d>& centers,
@@ -66,8 +68,8 @@ primitiveCost(const MatNode& a, const MatNode& b, const std::vector<Eigen::Vecto
 
 /** \brief min(C_r + α·C_θ, λ·C_mp), or C_r + α·C_θ when the primitive term is off.
  *
- * A NaN term (from NaN input data) makes the cost +inf: it never means "grow" (fix of
- * reference-facts §3.5, where a NaN made every comparison false and so accepted the node).
+ * A NaN term (from NaN input data) makes the cost +inf: it never means "grow" (in the
+ * authors' code a NaN made every comparison false and so accepted the node).
  */
 double
 combineGrowingCost(double radius_cost, double angle_cost, double primitive_cost,
@@ -81,7 +83,7 @@ combineGrowingCost(double radius_cost, double angle_cost, double primitive_cost,
 double
 growingCost(const MatGraph& graph, int i, int j, const GrowingCostWeights& weights);
 
-/** \brief Growing threshold between two tagged nodes (reference-facts §3.5).
+/** \brief Growing threshold between two tagged nodes (SEG-MAT §4.2–4.3).
  *
  * δ0·tag_ratio[tag] inside one thin part, δ0 when both are bulky (tag 0), 0 across a tag change
  * (a node still joins at exactly zero cost: the test is cost <= threshold). A tag without a ratio

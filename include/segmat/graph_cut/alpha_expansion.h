@@ -33,7 +33,7 @@ computePottsEnergy(const Eigen::MatrixXd& unary, const std::vector<PottsEdge>& e
  *
  * Minimises E(l) = Σ_i D(i, l_i) + Σ_{(a,b,w)} w·[l_a ≠ l_b] over labellings l. This Potts model
  * with a weight per edge is exactly the energy of SEG-MAT's surface transfer (Lin et al. 2022,
- * §5; reference-facts §3.10), whose smoothness depends on the edge only. Each expansion move is
+ * §5), whose smoothness depends on the edge only. Each expansion move is
  * one s–t minimum cut solved with segmat::BkMaxFlow (Boykov–Kolmogorov); the result is a local
  * minimum for every expansion move and, with non-negative unary costs, within a factor 2 of the
  * global optimum (Potts).
