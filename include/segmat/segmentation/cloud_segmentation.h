@@ -9,7 +9,7 @@
 #include <segmat/medial/cloud_medial_mesh_estimation.h>
 #include <segmat/medial/meso_skeleton_estimation.h>
 #include <segmat/segmentation/label_transfer.h>
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/medial/mat_graph.h>
 #include <segmat/segmentation/mat_region_growing.h>
 #include <segmat/segmentation/mat_segmentation_parameters.h>
 #include <segmat/segmentation/structure_tags.h>

@@ -8,7 +8,7 @@
 #include <segmat/geometry/medial_mesh.h>
 #include <segmat/geometry/triangle_mesh.h>
 #include <segmat/segmentation/label_transfer.h>
-#include <segmat/segmentation/mat_graph.h>
+#include <segmat/medial/mat_graph.h>
 #include <segmat/segmentation/mat_region_growing.h>
 #include <segmat/segmentation/mat_segmentation_parameters.h>
 #include <segmat/segmentation/structure_tags.h>
