@@ -35,10 +35,10 @@ TEST(BoxAbstractionMetrics, ExactBoxScoresOne)
 
 TEST(BoxAbstractionMetrics, HalfABarMatchesTheWorkedOutValues)
 {
-  // Shape [0,2]×[0,1]², box [0,1]³ (diagonal √6). IoU: half the cells (32 along x). Chamfer, shape → box:
-  // 4 of the 10 units of area at mean distance 1/2 (sides, x − 1), 1 at distance 1 (the end),
-  // mean 0.3; box → shape: only the face x = 1 (1 of 6) is off the surface, at the mean distance
-  // 1/6 to the square's border: 1/36. CD = ½ (0.3 + 1/36) / √6 = 0.06692. Squared: sides
+  // Shape [0,2]×[0,1]², box [0,1]³ (diagonal √6). IoU: half the cells (32 along x).
+  // Chamfer, shape → box: 4 of the 10 units of area at mean distance 1/2 (sides, x − 1), 1 at
+  // distance 1 (the end), mean 0.3; box → shape: only the face x = 1 (1 of 6) is off the
+  // surface, at the mean distance 1/6 to the square's border: 1/36. CD = ½ (0.3 + 1/36) / √6 = 0.06692. Squared: sides
   // E[(x−1)²] = 1/3, end 1: 0.2333; the face E[d²] = 1/24: 1/144; CD² = ½ (0.2333 + 1/144) / 6
   // = 0.02002.
   const TriangleMesh shape = test::box({0, 0, 0}, {2, 1, 1}, 8);

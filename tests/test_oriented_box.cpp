@@ -115,6 +115,22 @@ TEST(MinimumVolumeBox, BeatsThePrincipalAxesOnAnL)
   expectHoldsAndNotLargerThanAabb(pca, l.vertices);
 }
 
+TEST(MinimumVolumeBox, RegularTetrahedronGetsItsCube)
+{
+  // The minimal box of a regular tetrahedron of edge √2 is the unit cube through its vertices:
+  // each cube face holds one tetrahedron edge, no cube face is flush with a tetrahedron face.
+  for (unsigned seed = 20; seed < 24; ++seed) {
+    const Eigen::Matrix3d r = randomRotation(seed);
+    std::vector<Eigen::Vector3d> tetrahedron;
+    for (const Eigen::Vector3d& p : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 0),
+                                     Eigen::Vector3d(1, 0, 1), Eigen::Vector3d(0, 1, 1)})
+      tetrahedron.push_back(r * p);
+    const OrientedBox box = computeMinimumVolumeBox(tetrahedron);
+    EXPECT_NEAR(box.volume(), 1.0, 0.01) << "seed " << seed;
+    expectHoldsAndNotLargerThanAabb(box, tetrahedron);
+  }
+}
+
 TEST(MinimumVolumeBox, FlatCollinearAndTinyInputs)
 {
   const Eigen::Matrix3d r = randomRotation(3);

@@ -27,6 +27,7 @@ using Points = std::vector<Eigen::Vector3d>;
 
 constexpr std::size_t kMaxCandidateVertices = 200;
 constexpr std::size_t kRecheckedCandidates = 16;
+constexpr std::size_t kMaxEdgePairDirections = 60;
 
 /** The box with the given axes (rows) that just holds the points. */
 OrientedBox
@@ -181,7 +182,7 @@ boxAxesAround(const Points& points, const Eigen::Vector3d& n)
 /** Convex hull vertices, facet normals and edge directions by qhull ("Qt": triangulated output,
  * so every facet lists three vertices). False for flat, collinear or too few points. */
 bool
-convexHull(const Points& points, Points& vertices, Points& directions)
+convexHull(const Points& points, Points& vertices, Points& directions, Points& edges)
 {
   if (points.size() < 4)
     return false;
@@ -212,7 +213,7 @@ convexHull(const Points& points, Points& vertices, Points& directions)
       FOREACHvertex_(facet->vertices)
       corners.push_back(points[qh_pointid(qh, vertex->point)]);
       for (std::size_t k = 0; k < corners.size(); ++k)
-        directions.push_back(corners[(k + 1) % corners.size()] - corners[k]);
+        edges.push_back(corners[(k + 1) % corners.size()] - corners[k]);
     }
   }
   qh_freeqhull(qh, !qh_ALL);
@@ -374,20 +375,21 @@ computeMinimumVolumeBox(const std::vector<Eigen::Vector3d>& points)
   const Points finite = finitePoints(points);
   if (finite.empty())
     return OrientedBox();
-  Points hull, directions;
-  if (!convexHull(finite, hull, directions))
+  Points hull, directions, edges;
+  if (!convexHull(finite, hull, directions, edges))
     hull = finite;
   // Candidates cost O(h log h) each and a hull has about 5h of them: a large hull proposes its
   // candidates from the hull of kMaxCandidateVertices spread-out hull vertices instead; the
   // rotation descent and the final fit then use the whole hull.
   Points candidate_hull = hull;
   if (hull.size() > kMaxCandidateVertices) {
-    Points spread, spread_hull, spread_directions;
+    Points spread, spread_hull, spread_directions, spread_edges;
     for (const int i : thinPointsToCount(hull, kMaxCandidateVertices))
       spread.push_back(hull[i]);
-    if (convexHull(spread, spread_hull, spread_directions)) {
+    if (convexHull(spread, spread_hull, spread_directions, spread_edges)) {
       candidate_hull = std::move(spread_hull);
       directions = std::move(spread_directions);
+      edges = std::move(spread_edges);
     }
   }
   const Eigen::Matrix3d pca = pcaAxes(finite);
@@ -395,6 +397,14 @@ computeMinimumVolumeBox(const std::vector<Eigen::Vector3d>& points)
     directions.push_back(pca.row(i).transpose());
     directions.push_back(Eigen::Vector3d::Unit(i));
   }
+  // Edge directions; and for small hulls the normals of edge pairs, the axis shared by two box
+  // faces each flush with one edge (O'Rourke's second case, e.g. a regular tetrahedron's cube).
+  const Points edge_directions = distinctDirections(edges);
+  directions.insert(directions.end(), edge_directions.begin(), edge_directions.end());
+  if (edge_directions.size() <= kMaxEdgePairDirections)
+    for (std::size_t i = 0; i < edge_directions.size(); ++i)
+      for (std::size_t j = i + 1; j < edge_directions.size(); ++j)
+        directions.push_back(edge_directions[i].cross(edge_directions[j]));
   // The axis-aligned box is the reference: a candidate replaces it only when strictly smaller.
   const double size = std::max(fitBox(finite, Eigen::Matrix3d::Identity()).extents.norm(), 1e-300);
   Eigen::Matrix3d best_axes = Eigen::Matrix3d::Identity();

@@ -63,14 +63,18 @@ struct PartBox
  *     (thinPointsToCount), which keeps the cost near-linear, and its 16 best candidates are
  *     redone on the whole hull;
  *  2. candidate directions for one box axis: every hull facet normal, every hull edge direction,
- *     the three principal axes (PCA) and the three coordinate axes;
+ *     the cross product of every pair of edge directions when there are at most 60 of them
+ *     (the axis shared by two box faces each flush with an edge: O'Rourke's second case, e.g.
+ *     the cube around a regular tetrahedron), the three principal axes (PCA) and the three
+ *     coordinate axes;
  *  3. for each candidate axis n the hull is projected onto the plane ⊥ n and the minimal-area
  *     rectangle of that 2D hull is found by rotating calipers (Toussaint 1983; exact in 2D, one
  *     rectangle side is flush with a hull edge), giving a box of volume area × extent along n;
  *  4. the smallest box is refined by a descent over small rotations (step halving from 2°
  *     to 0.001°), which only accepts smaller boxes.
  * Step 3 is exact whenever the optimal box has a face flush with a hull facet (boxes, prisms,
- * cylinders, most CAD parts). Since the coordinate axes are candidates, the box is never larger
+ * cylinders, most CAD parts). bench/bench_box_fit measures the ratio to the known optimum
+ * (docs/abstraction.md). Since the coordinate axes are candidates, the box is never larger
  * than the axis-aligned box, and since PCA axes are candidates it is never larger than the PCA
  * box. Points that are coplanar, collinear or fewer than four skip the hull (the candidates are
  * then the PCA and coordinate axes, which contain the plane's normal). The final extents are
