@@ -12,8 +12,8 @@ namespace segmat {
 const std::vector<DetailLevel>&
 detailLevels()
 {
-  // Measured on psb-dev (docs/levels.md): coarse roughly halves the default's part count,
-  // fine roughly doubles it.
+  // δ and η were swept on psb-dev (bench_sensitivity, docs/levels.md): coarse and fine are the
+  // ends of the swept range that still move the part count the expected way.
   static const std::vector<DetailLevel> levels{
       {"coarse", 0.03, 0.004}, {"default", 0.015, 0.002}, {"fine", 0.0075, 0.001}};
   return levels;
