@@ -3,11 +3,10 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #pragma once
-// --level and --hierarchy of segmat_mesh (not installed).
+// --hierarchy of segmat_mesh (not installed).
 
 #include <segmat/io/atomic_file.h>
 #include <segmat/io/seg.h>
-#include <segmat/segmentation/detail_level.h>
 #include <segmat/segmentation/mesh_segmentation.h>
 #include <segmat/segmentation/segmentation_hierarchy.h>
 
@@ -18,16 +17,6 @@
 
 namespace segmat {
 namespace cli {
-
-/** --level: sets δ and η together (coarse, default, fine or a number in [−1, 1]). */
-template <typename Segmentation>
-void
-applyDetailLevel(Segmentation& segmentation, const std::string& text)
-{
-  const DetailLevel level = parseDetailLevel(text);
-  segmentation.setGrowingThreshold(level.growing_threshold);
-  segmentation.setMinRegionFraction(level.min_region_fraction);
-}
 
 /** --hierarchy: segments at every named level, coarse to fine, reusing the medial meshes, and
  * writes PREFIX_levelK.seg per level and PREFIX_hierarchy.json:

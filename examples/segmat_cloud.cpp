@@ -13,6 +13,7 @@
 
 #include "box_output.h"
 #include "cli_options.h"
+#include "detail_level_option.h"
 
 #include <chrono>
 #include <cmath>
@@ -51,6 +52,8 @@ const char* const kUsage =
     "  --noisy-centres-outside  let Q-MAT move a noisy cloud's merged sphere centres out of\n"
     "                     the surface (faster; by default they are kept inside)\n"
     "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"
+    "  --level L          coarse, default or fine: sets -g and -n together (docs/levels.md);\n"
+    "                     a number in [-1, 1] goes between them\n"
     "  --boxes            also write PREFIX_boxes.json and PREFIX_boxes.ply: one tight oriented\n"
     "                     box per part (docs/abstraction.md)\n"
     "  --json             print one JSON object: parts, point_counts, seconds per stage\n"
@@ -126,6 +129,8 @@ main(int argc, char** argv)
         save_mat = true;
       else if (arg == "--boxes")
         boxes = true;
+      else if (arg == "--level")
+        applyDetailLevel(segmentation, value());
       else if (arg == "--runs")
         segmentation.setConsensusRuns(parseInteger(arg, value(), 1));
       else if (arg == "--runs-merge") {

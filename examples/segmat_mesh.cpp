@@ -14,6 +14,7 @@
 
 #include "box_output.h"
 #include "cli_options.h"
+#include "detail_level_option.h"
 #include "hierarchy_output.h"
 
 #include <chrono>

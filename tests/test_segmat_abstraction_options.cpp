@@ -164,4 +164,9 @@ TEST(SegmatCloudOptions, BoxesHoldTheirPoints)
     points.push_back(p.getVector3fMap().cast<double>());
   expectBoxesHoldTheirParts(readBoxes(prefix + "_boxes.json"), points, labels);
   EXPECT_EQ(loadQuietly(prefix + "_boxes.ply").numFaces() % 12, 0u);
+
+  const test::ProgramRun bad =
+      test::runProgram("segmat_cloud", input + " -o " + prefix + " --level finest");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("level 'finest'"), std::string::npos) << bad.err;
 }
