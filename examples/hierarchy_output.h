@@ -33,7 +33,7 @@ writeHierarchy(const std::string& prefix, MeshSegmentation& segmentation)
   for (std::size_t k = 0; k < hierarchy.size(); ++k)
     io::saveSeg(prefix + "_level" + std::to_string(k) + ".seg", hierarchy[k].labels);
   io::writeFileAtomically(prefix + "_hierarchy.json", [&](std::ostream& out) {
-    out.precision(17);
+    out.precision(15); // the levels' δ and η print as written (0.03, not 0.029999999999999999)
     out << "{\"levels\": [";
     for (std::size_t k = 0; k < hierarchy.size(); ++k) {
       const HierarchyLevel& h = hierarchy[k];
