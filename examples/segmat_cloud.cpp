@@ -11,8 +11,10 @@
 #include <segmat/io/ma.h>
 #include <segmat/segmentation/cloud_segmentation.h>
 
+#include "box_output.h"
 #include "cli_options.h"
 #include "render_call.h"
+#include "detail_level_option.h"
 
 #include <chrono>
 #include <cmath>
@@ -52,6 +54,10 @@ const char* const kUsage =
     "                     the surface (faster; by default they are kept inside)\n"
     "  --threads N        threads (default: OpenMP's choice; results do not depend on it)\n"
     "  --png FILE         also draw the parts into a PNG (segmat_render, built with VTK)\n"
+    "  --level L          coarse, default or fine: sets -g and -n together (docs/levels.md);\n"
+    "                     a number in [-1, 1] goes between them\n"
+    "  --boxes            also write PREFIX_boxes.json and PREFIX_boxes.ply: one tight oriented\n"
+    "                     box per part (docs/abstraction.md)\n"
     "  --json             print one JSON object: parts, point_counts, seconds per stage\n"
     "                     (summed over the runs), runs [made, kept], origin (what a cloud far\n"
     "                     from 0 was moved by; outputs are written back in the file's frame)\n";
@@ -80,7 +86,7 @@ main(int argc, char** argv)
 {
   std::string cloud_path, prefix;
   std::string png; // --png: a picture by segmat_render
-  bool json = false, estimate_normals = false, save_mat = false;
+  bool json = false, estimate_normals = false, save_mat = false, boxes = false;
   segmat::CloudSegmentation<pcl::PointNormal> segmentation;
   try {
     for (int i = 1; i < argc; ++i) {
@@ -124,6 +130,10 @@ main(int argc, char** argv)
         segmentation.setMedialAxis(segmat::CloudMedialAxis::MesoSkeleton);
       else if (arg == "--save-mat")
         save_mat = true;
+      else if (arg == "--boxes")
+        boxes = true;
+      else if (arg == "--level")
+        applyDetailLevel(segmentation, value());
       else if (arg == "--runs")
         segmentation.setConsensusRuns(parseInteger(arg, value(), 1));
       else if (arg == "--runs-merge") {
@@ -188,6 +198,8 @@ main(int argc, char** argv)
     segmat::io::saveLabels(prefix + ".labels", segmentation.getLabels());
     if (!png.empty())
       renderPicture(cloud_path, prefix + ".labels", png);
+    if (boxes)
+      writePartBoxes(prefix, labelled, segmentation.getLabels());
     if (save_mat && !segmentation.getBaseMat().empty()) {
       segmat::io::saveMa(prefix + "_base.ma", inFileFrame(segmentation.getBaseMat(), loaded.origin));
       segmat::io::saveMa(prefix + "_struct.ma",

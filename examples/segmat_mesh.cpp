@@ -12,8 +12,11 @@
 #include <segmat/io/seg.h>
 #include <segmat/segmentation/mesh_segmentation.h>
 
+#include "box_output.h"
 #include "cli_options.h"
 #include "render_call.h"
+#include "detail_level_option.h"
+#include "hierarchy_output.h"
 
 #include <chrono>
 #include <cmath>
@@ -28,7 +31,7 @@ const char* const kUsage =
     "usage: segmat_mesh MESH -o PREFIX [-b BASE.ma -s STRUCTURED.ma] [--save-mat] [-g DELTA0]\n"
     "                   [-n ETA] [--seed S] [--max-bend DEG] [--reference-crease]\n"
     "                   [--threads T]\n"
-    "                   [--json] [--png PICTURE.png]\n"
+    "                   [--level L] [--hierarchy] [--boxes] [--json] [--png PICTURE.png]\n"
     "  MESH            closed triangle mesh (.off, .ply, .obj, .stl)\n"
     "  -o PREFIX       writes PREFIX.seg (one label per face, PSB format) and PREFIX.ply\n"
     "                  (faces coloured by part)\n"
@@ -46,7 +49,13 @@ const char* const kUsage =
     "                  (default: a sharp concave crease is much cheaper to cut than a shallow\n"
     "                  one; see README)\n"
     "  --json          print one JSON object: parts, face_counts, seconds per stage\n"
-    "  --png FILE      also draw the parts into a PNG (segmat_render, built with VTK)\n";
+    "  --png FILE      also draw the parts into a PNG (segmat_render, built with VTK)\n"
+    "  --level L       coarse, default or fine: sets -g and -n together (docs/levels.md);\n"
+    "                  a number in [-1, 1] goes between them (-1 coarse, 0 default, 1 fine)\n"
+    "  --hierarchy     also segment at every level, coarse to fine, each part inside one part\n"
+    "                  of the level above; writes PREFIX_level0.seg.. and PREFIX_hierarchy.json\n"
+    "  --boxes         also write PREFIX_boxes.json and PREFIX_boxes.ply: one tight oriented\n"
+    "                  box per part (docs/abstraction.md)\n";
 
 
 
@@ -59,7 +68,7 @@ main(int argc, char** argv)
 {
   std::string mesh_path, base_path, structured_path, prefix;
   std::string png; // --png: a picture by segmat_render
-  bool json = false, save_mat = false;
+  bool json = false, save_mat = false, boxes = false, hierarchy = false;
   segmat::MeshSegmentation segmentation;
   segmentation.setNumberOfThreads(1);
   try {
@@ -106,6 +115,12 @@ main(int argc, char** argv)
         json = true;
       else if (arg == "--png")
         png = value();
+      else if (arg == "--boxes")
+        boxes = true;
+      else if (arg == "--level")
+        applyDetailLevel(segmentation, value());
+      else if (arg == "--hierarchy")
+        hierarchy = true;
       else if (arg == "--save-mat")
         save_mat = true;
       else if (arg == "--threads") {
@@ -168,6 +183,8 @@ main(int argc, char** argv)
     segmat::io::saveColoredMeshPly(prefix + ".ply", *mesh, labels);
     if (!png.empty())
       renderPicture(mesh_path, prefix + ".seg", png);
+    if (boxes)
+      writePartBoxes(prefix, mesh, labels);
     if (save_mat) {
       segmat::io::saveMa(prefix + "_base.ma", *segmentation.getBaseMat());
       segmat::io::saveMa(prefix + "_struct.ma", *segmentation.getStructuredMat());
@@ -180,6 +197,8 @@ main(int argc, char** argv)
     for (const auto& stage : segmentation.getStageSeconds())
       seconds.push_back(stage);
     seconds.emplace_back("write", write_seconds);
+    if (hierarchy) // after the report's figures were taken: it segments again
+      writeHierarchy(prefix, segmentation);
 
     if (json) {
       std::printf("{\"parts\": %zu, \"mat_computed\": %s, \"base_spheres\": %zu, "

@@ -17,19 +17,13 @@ namespace {
 
 const std::string kTeddy = std::string(SEGMAT_DATA_DIR) + "/teddy/";
 
-std::string
-teddyArgs(const std::string& prefix)
-{
-  return kTeddy + "teddy.off -b " + kTeddy + "teddy_mat.ma -s " + kTeddy + "teddy_smat.ma -o " +
-         prefix;
-}
-
 } // namespace
 
 TEST(SegmatMesh, WritesSegAndPlyAndPrintsJson)
 {
   const std::string prefix = test::scratchDir() + "teddy_cli";
-  const test::ProgramRun run = test::runProgram("segmat_mesh", teddyArgs(prefix) + " --json");
+  const test::ProgramRun run =
+    test::runProgram("segmat_mesh", test::teddyMeshArgs(prefix) + " --json");
   ASSERT_EQ(run.status, 0) << run.err;
   ASSERT_TRUE(test::fileExists(prefix + ".seg"));
   ASSERT_TRUE(test::fileExists(prefix + ".ply"));
@@ -56,7 +50,8 @@ TEST(SegmatMesh, WritesSegAndPlyAndPrintsJson)
   EXPECT_EQ(json.get<int>("base_spheres"), 2000);
 
   // Plain output says the same.
-  const test::ProgramRun plain = test::runProgram("segmat_mesh", teddyArgs(prefix + "_plain"));
+  const test::ProgramRun plain =
+    test::runProgram("segmat_mesh", test::teddyMeshArgs(prefix + "_plain"));
   ASSERT_EQ(plain.status, 0) << plain.err;
   EXPECT_NE(plain.out.find("parts: 8"), std::string::npos) << plain.out;
   EXPECT_EQ(io::loadSeg(prefix + "_plain.seg"), labels);
@@ -132,7 +127,7 @@ TEST(SegmatMesh, BadInputNamesTheFileAndFails)
   run = test::runProgram("segmat_mesh", kTeddy + "teddy.off");
   EXPECT_EQ(run.status, 2);
   EXPECT_NE(run.err.find("usage"), std::string::npos);
-  run = test::runProgram("segmat_mesh", teddyArgs(prefix) + " --save-mat");
+  run = test::runProgram("segmat_mesh", test::teddyMeshArgs(prefix) + " --save-mat");
   EXPECT_EQ(run.status, 2);
 
   // A mesh that encloses nothing: the medial meshes cannot be computed (exit 1, a message).
@@ -142,10 +137,10 @@ TEST(SegmatMesh, BadInputNamesTheFileAndFails)
   EXPECT_EQ(run.status, 1);
   EXPECT_NE(run.err.find("sheet.off"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("MedialMeshEstimation"), std::string::npos) << run.err;
-  run = test::runProgram("segmat_mesh", teddyArgs(prefix) + " -g abc");
+  run = test::runProgram("segmat_mesh", test::teddyMeshArgs(prefix) + " -g abc");
   EXPECT_NE(run.status, 0);
   EXPECT_NE(run.err.find("-g"), std::string::npos);
-  run = test::runProgram("segmat_mesh", teddyArgs(prefix) + " --max-bend 0");
+  run = test::runProgram("segmat_mesh", test::teddyMeshArgs(prefix) + " --max-bend 0");
   EXPECT_NE(run.status, 0);
   EXPECT_NE(run.err.find("--max-bend"), std::string::npos) << run.err;
   EXPECT_FALSE(test::fileExists(prefix + ".seg"));

@@ -22,5 +22,13 @@ runProgram(const std::string& program, const std::string& args)
   return run;
 }
 
+std::string
+teddyMeshArgs(const std::string& prefix)
+{
+  const std::string teddy = std::string(SEGMAT_DATA_DIR) + "/teddy/";
+  return teddy + "teddy.off -b " + teddy + "teddy_mat.ma -s " + teddy + "teddy_smat.ma -o " +
+         prefix;
+}
+
 } // namespace test
 } // namespace segmat

@@ -20,5 +20,11 @@ struct ProgramRun
 ProgramRun
 runProgram(const std::string& program, const std::string& args);
 
+/** \brief segmat_mesh's arguments for the bundled teddy with the authors' medial meshes, writing
+ * to \a prefix: "data/teddy/teddy.off -b teddy_mat.ma -s teddy_smat.ma -o PREFIX".
+ */
+std::string
+teddyMeshArgs(const std::string& prefix);
+
 } // namespace test
 } // namespace segmat
