@@ -2,7 +2,8 @@
 # Installs segmat's build dependencies (Debian 12 packages) when any is missing. Needs root.
 set -euo pipefail
 packages=(cmake g++ make libpcl-dev libeigen3-dev libboost-graph-dev libflann-dev libgtest-dev
-          libqhull-dev liblz4-dev)
+          libqhull-dev liblz4-dev
+          clang libclang-rt-14-dev) # clang: the libFuzzer targets of scripts/fuzz.sh
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

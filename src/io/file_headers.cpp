@@ -12,6 +12,7 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <vector>
@@ -120,6 +121,17 @@ struct PlyElement
   long line = 0;
 };
 } // namespace
+
+void
+requireRegularFile(const std::string& path)
+{
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status))
+    throw Error(path, 0, "cannot open the file (missing or unreadable)");
+  if (std::filesystem::is_directory(status))
+    throw Error(path, 0, "is a directory, not a file");
+}
 
 void
 checkPlyHeader(const std::string& path)

@@ -116,7 +116,7 @@ MeshSegmentation::getNumberOfThreads() const
 }
 
 bool
-MeshSegmentation::segment(std::vector<int>& face_labels)
+MeshSegmentation::segmentInFrame(std::vector<int>& face_labels)
 {
   face_labels.clear();
   face_labels_.clear();

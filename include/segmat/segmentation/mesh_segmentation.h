@@ -151,6 +151,12 @@ public:
    * \return false (PCL_ERROR) when the mesh has no faces, only one medial mesh is given, the
    *         base one is empty, the medial meshes cannot be computed (e.g. a mesh that encloses no
    *         volume), or a stage fails.
+   *
+   * The mesh is segmented in a normalised frame: centred on its bounding box, scaled by a power
+   * of two to a diagonal near 1, vertices and faces in a canonical order (docs/robustness.md).
+   * Translating, scaling or re-ordering the input therefore changes nothing beyond the input's
+   * own rounding; a power-of-two scale changes no label. Labels, parts and the medial meshes
+   * returned are in the input's frame and order; getGraph() is in the normalised frame.
    */
   bool
   segment(std::vector<int>& face_labels);
@@ -188,6 +194,13 @@ private:
   /** \brief Forgets base_ and structured_ (and what depends on them) if segment() computed them. */
   void
   dropComputedMats();
+
+  /** \brief segment() on the members as they are (mesh_ already in the normalised frame). */
+  bool
+  segmentInFrame(std::vector<int>& face_labels);
+
+  struct FrameCache; // the normalised copies (src/segmentation/mesh_segmentation_frame.cpp)
+  std::shared_ptr<FrameCache> frame_;
 
   TriangleMesh::ConstPtr mesh_;
   MedialMesh::ConstPtr base_;
