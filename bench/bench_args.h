@@ -9,6 +9,8 @@
 #include <segmat/common/error.h>
 #include <segmat/io/mesh.h>
 
+#include "option_parser.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -36,15 +38,21 @@ appendPaths(const std::string& path, std::vector<std::string>& files)
   files.insert(files.end(), found.begin(), found.end());
 }
 
-/** \brief The integer after option argv[i] (advancing i); exits with status 2 when missing. */
+/** \brief The integer after option argv[i] (advancing i), read by the programs' shared parser;
+ * exits with status 2 (cli::kExitBadInput) when missing or not a whole number. */
 inline int
 intArgument(int argc, char** argv, int& i)
 {
-  if (i + 1 >= argc) {
-    std::fprintf(stderr, "missing value after %s\n", argv[i]);
-    std::exit(2);
+  const std::string option = argv[i];
+  try {
+    if (i + 1 >= argc)
+      throw Error("needs a value");
+    return static_cast<int>(cli::parseInteger(argv[++i], -1000000000L));
   }
-  return std::atoi(argv[++i]);
+  catch (const Error& e) {
+    std::fprintf(stderr, "option %s: %s\n", option.c_str(), e.what());
+    std::exit(cli::kExitBadInput);
+  }
 }
 
 /** \brief The mesh at \a path, or null (with a "skipped" line on stderr) when it cannot be read. */

@@ -10,36 +10,19 @@
 #include <segmat/evaluation/psb_metrics.h>
 #include <segmat/io/off.h>
 
+#include "option_parser.h"
+#include "program_files.h"
+#include "progress.h"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <algorithm>
 #include <string>
 #include <vector>
 
+using namespace segmat::cli;
+
 namespace {
-
-const char* const kUsage =
-    "usage:\n"
-    "  segmat_eval --mesh M.off --pred P.seg --truth T1.seg [T2.seg ...] [--json]\n"
-    "  segmat_eval --psb DIR --pred PREDDIR [--models 1,5-20] [--json]\n"
-    "\n"
-    "Princeton Segmentation Benchmark scores (fractions, lower is better; CD in units of the\n"
-    "mesh's average radius; RI = 1 - Rand index; GCE/LCE measure regions by area, GCEf/LCEf by\n"
-    "face count). The first form scores P against each truth and prints the means (CD over the\n"
-    "truths where it exists: it is undefined when a segmentation has no cut). The second scores\n"
-    "PREDDIR/N.seg against DIR/seg/Benchmark/N/N_k.seg on DIR/off/N.off for every model with a\n"
-    "prediction (or exactly the --models given) and prints per-model, per-category and overall\n"
-    "means (overall = mean over models).\n"
-    "Exit status: 0 success, 2 bad usage or a missing or malformed input file, 1 other failure.\n";
-
-int
-usageError(const std::string& message)
-{
-  std::fprintf(stderr, "segmat_eval: %s\n%s", message.c_str(), kUsage);
-  return 2;
-}
 
 // A positive id written in digits only; -1 otherwise.
 long
@@ -173,59 +156,75 @@ evaluateFolder(const std::string& dataset_dir, const std::string& pred_dir,
   return 0;
 }
 
+int
+run(int argc, char** argv)
+{
+  std::string mesh, pred, psb, models;
+  std::vector<std::string> truths;
+  bool has_models = false;
+  CommonOptions common;
+  OptionParser parser(
+      "segmat_eval", "--mesh M.off --pred P.seg --truth T1.seg [T2.seg ...] [--json]\n"
+      "       segmat_eval --psb DIR --pred PREDDIR [--models 1,5-20] [--json]",
+      "Princeton Segmentation Benchmark scores (fractions, lower is better; CD in units of the\n"
+      "mesh's average radius; RI = 1 - Rand index; GCE/LCE measure regions by area, GCEf/LCEf by\n"
+      "face count). The first form scores P against each truth and prints the means (CD over the\n"
+      "truths where it exists: it is undefined when a segmentation has no cut). The second scores\n"
+      "PREDDIR/N.seg against DIR/seg/Benchmark/N/N_k.seg on DIR/off/N.off for every model with a\n"
+      "prediction (or exactly the --models given) and prints per-model, per-category and overall\n"
+      "means (overall = mean over models).",
+      "segmat_eval --mesh data/teddy/teddy.off --pred teddy.seg --truth data/teddy/seg/180_0.seg");
+  parser.add(kInput, "--mesh", "M.off", "the mesh the labels belong to",
+             [&](const std::string& v) { mesh = v; });
+  parser.add(kInput, "--pred", "P", "predicted labels (.seg), or with --psb a folder of N.seg",
+             [&](const std::string& v) { pred = v; });
+  parser.add(kInput, "--truth", "T.seg", "reference labels; more files may follow",
+             [&](const std::string& v) { truths.push_back(v); });
+  parser.rest(truths);
+  parser.add(kInput, "--psb", "DIR", "a PSB-style folder (off/N.off, seg/Benchmark/N/N_k.seg)",
+             [&](const std::string& v) { psb = v; });
+  parser.add(kInput, "--models", "LIST", "with --psb: the models to score (example: 1,5-20)",
+             [&](const std::string& v) {
+               models = v;
+               has_models = true;
+             });
+  addCommonOptions(parser, common, false);
+
+  if (!parser.parse(argc, argv))
+    return kExitOk;
+  Progress progress(parser.program(), common.quiet);
+  progress.stage("scoring");
+  if (!psb.empty()) {
+    if (!mesh.empty() || !truths.empty())
+      throw UsageError("--psb does not combine with --mesh or --truth");
+    if (pred.empty())
+      throw UsageError("--psb needs --pred PREDDIR");
+    std::vector<int> ids;
+    if (has_models && !parseModelList(models, ids))
+      throw UsageError("bad --models list '" + models + "' (example: 1,5-20)");
+    int status = kExitOk;
+    asInput([&] { status = evaluateFolder(psb, pred, ids, common.json); });
+    progress.done();
+    return status;
+  }
+  if (has_models)
+    throw UsageError("--models goes with --psb");
+  if (mesh.empty() || pred.empty() || truths.empty())
+    throw UsageError("give --mesh, --pred and --truth (or --psb and --pred)");
+  for (const std::string& path : truths)
+    checkInputFile(path);
+  checkInputFile(mesh);
+  checkInputFile(pred);
+  int status = kExitOk;
+  asInput([&] { status = evaluateOne(mesh, pred, truths, common.json); });
+  progress.done();
+  return status;
+}
+
 } // namespace
 
 int
 main(int argc, char** argv)
 {
-  std::string mesh, pred, psb, models;
-  std::vector<std::string> truths;
-  bool as_json = false, has_models = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool has_value = i + 1 < argc && std::strncmp(argv[i + 1], "--", 2) != 0;
-    if (arg == "-h" || arg == "--help") {
-      std::printf("%s", kUsage);
-      return 0;
-    } else if (arg == "--json") {
-      as_json = true;
-    } else if (arg == "--truth") {
-      while (i + 1 < argc && std::strncmp(argv[i + 1], "--", 2) != 0)
-        truths.push_back(argv[++i]);
-      if (truths.empty())
-        return usageError("--truth needs at least one file");
-    } else if (arg == "--mesh" || arg == "--pred" || arg == "--psb" || arg == "--models") {
-      if (!has_value)
-        return usageError(arg + " needs a value");
-      std::string& target = arg == "--mesh" ? mesh : arg == "--pred" ? pred : arg == "--psb" ? psb : models;
-      target = argv[++i];
-      has_models = has_models || arg == "--models";
-    } else {
-      return usageError("unknown argument '" + arg + "'");
-    }
-  }
-
-  try {
-    if (!psb.empty()) {
-      if (!mesh.empty() || !truths.empty())
-        return usageError("--psb does not combine with --mesh or --truth");
-      if (pred.empty())
-        return usageError("--psb needs --pred PREDDIR");
-      std::vector<int> ids;
-      if (has_models && !parseModelList(models, ids))
-        return usageError("bad --models list '" + models + "' (example: 1,5-20)");
-      return evaluateFolder(psb, pred, ids, as_json);
-    }
-    if (has_models)
-      return usageError("--models goes with --psb");
-    if (mesh.empty() || pred.empty() || truths.empty())
-      return usageError("give --mesh, --pred and --truth (or --psb and --pred)");
-    return evaluateOne(mesh, pred, truths, as_json);
-  } catch (const segmat::Error& e) {
-    std::fprintf(stderr, "segmat_eval: %s\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "segmat_eval: %s\n", e.what());
-    return 1;
-  }
+  return runMain("segmat_eval", [&] { return run(argc, argv); });
 }

@@ -4,7 +4,8 @@
 # their tests need (see SEGMAT_TEST_PACKAGES there).
 set -euo pipefail
 packages=(cmake g++ make libpcl-dev libeigen3-dev libboost-graph-dev libflann-dev libgtest-dev
-          libqhull-dev liblz4-dev "$@")
+          libqhull-dev liblz4-dev
+          clang libclang-rt-14-dev "$@") # clang: the libFuzzer targets of scripts/fuzz.sh
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

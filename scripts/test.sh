@@ -12,3 +12,7 @@ bash "$root/scripts/install_deps.sh" "${packages[@]}"
 bash "$root/scripts/build.sh" -DSEGMAT_BUILD_TESTS=ON
 cd "$root/build"
 ctest --output-on-failure -j "${SEGMAT_JOBS:-$(nproc)}"
+# Fuzz every file reader for a short fixed time (docs/robustness.md); SEGMAT_FUZZ_SECONDS=0 skips.
+if [ "${SEGMAT_FUZZ_SECONDS:-20}" != 0 ]; then
+  SEGMAT_FUZZ_SECONDS="${SEGMAT_FUZZ_SECONDS:-20}" bash "$root/scripts/fuzz.sh"
+fi

@@ -158,13 +158,14 @@ TEST(SegmatCloud, BadArgumentsAndFilesFailWithAMessage)
   EXPECT_NE(run.err.find("--boundary-merge"), std::string::npos) << run.err;
   run = test::runProgram("segmat_cloud", "x.pcd -o " + prefix + " --frobnicate");
   EXPECT_EQ(run.status, 2);
-  // A missing file, an empty cloud, an all-NaN cloud: exit 1, nothing written.
+  // A missing file or an empty cloud is bad input (exit 2); an all-NaN cloud cannot be
+  // segmented (exit 1). Nothing is written.
   run = test::runProgram("segmat_cloud", test::scratchDir() + "missing.pcd -o " + prefix);
-  EXPECT_EQ(run.status, 1);
+  EXPECT_EQ(run.status, 2);
   EXPECT_NE(run.err.find("missing.pcd"), std::string::npos) << run.err;
   const std::string empty = test::writeScratchFile("empty.xyz", "# nothing\n");
   run = test::runProgram("segmat_cloud", empty + " -o " + prefix);
-  EXPECT_EQ(run.status, 1) << run.err;
+  EXPECT_EQ(run.status, 2) << run.err;
   pcl::PointCloud<pcl::PointXYZ> nans;
   const float nan = std::numeric_limits<float>::quiet_NaN();
   nans.resize(10, pcl::PointXYZ(nan, nan, nan));

@@ -13,13 +13,16 @@ namespace segmat {
 namespace detail {
 
 /** \brief Threads for a parallel loop: \a requested, or OpenMP's choice when 0 (1 without
- * OpenMP).
+ * OpenMP). Never more than the machine's processors: per-thread buffers of an absurd count
+ * would exhaust memory, and results do not depend on the count.
  */
 inline int
 threadCount(unsigned int requested)
 {
 #ifdef _OPENMP
-  return requested > 0 ? static_cast<int>(requested) : omp_get_max_threads();
+  const unsigned procs = static_cast<unsigned>(omp_get_num_procs());
+  return requested > 0 ? static_cast<int>(requested < procs ? requested : procs)
+                       : omp_get_max_threads();
 #else
   (void)requested;
   return 1;

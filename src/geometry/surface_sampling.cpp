@@ -33,6 +33,25 @@ validFace(const TriangleMesh& mesh, const Eigen::Vector3i& f)
 }
 } // namespace
 
+double
+estimateSurfaceSampleCount(const TriangleMesh& mesh, double max_spacing)
+{
+  double count = static_cast<double>(mesh.vertices.size());
+  const double h = max_spacing;
+  if (!(h > 0.0) || !std::isfinite(h))
+    return count;
+  for (const Eigen::Vector3i& f : mesh.faces) {
+    if (!validFace(mesh, f))
+      continue;
+    const Eigen::Vector3d &a = mesh.vertices[f[0]], &b = mesh.vertices[f[1]],
+                          &c = mesh.vertices[f[2]];
+    // Each edge is shared by about two faces: half of its points per face.
+    count += 0.5 * ((b - a).norm() + (c - b).norm() + (a - c).norm()) / h;
+    count += 0.5 * (b - a).cross(c - a).norm() / (h * h * std::sqrt(3.0) / 2.0);
+  }
+  return count;
+}
+
 std::vector<Eigen::Vector3d>
 sampleSurface(const TriangleMesh& mesh, double max_spacing)
 {

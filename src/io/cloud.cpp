@@ -128,6 +128,7 @@ loadXyz(const std::string& path)
 LoadedCloud
 loadCloud(const std::string& path)
 {
+  detail::requireRegularFile(path);
   const std::string ext = extensionOf(path);
   if (ext == "pcd") {
     detail::checkPcdHeader(path);

@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include "cloud_fields.h"
+#include "file_headers.h"
 
 #include <segmat/common/error.h>
 
@@ -102,6 +103,7 @@ readVectorField(const pcl::PCLPointCloud2& cloud, const std::array<const char*, 
 void
 runPclReader(const std::string& path, const char* format, const std::function<bool()>& read)
 {
+  requireRegularFile(path);
   if (!std::ifstream(path))
     throw Error(path, 0, "cannot open the file (missing or unreadable)");
   bool ok = false;

@@ -12,6 +12,7 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <vector>
@@ -122,6 +123,17 @@ struct PlyElement
 } // namespace
 
 void
+requireRegularFile(const std::string& path)
+{
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status))
+    throw Error(path, 0, "cannot open the file (missing or unreadable)");
+  if (std::filesystem::is_directory(status))
+    throw Error(path, 0, "is a directory, not a file");
+}
+
+void
 checkPlyHeader(const std::string& path)
 {
   HeaderLines header(path, "PLY");
@@ -206,7 +218,11 @@ checkPcdHeader(const std::string& path)
     const std::string_view line = header.next("DATA");
     Tokens tokens(line);
     std::string_view keyword, token;
-    if (!tokens.next(keyword) || keyword.front() == '#')
+    // PCL's header parser loses its place on a line of blanks (then reads no points and
+    // crashes on the data): refuse blank lines, which PCL never writes.
+    if (!tokens.next(keyword))
+      header.fail("blank line in the PCD header");
+    if (keyword.front() == '#')
       continue;
     std::vector<std::string_view> values;
     while (tokens.next(token))
@@ -330,7 +346,18 @@ checkStlSize(const std::string& path)
     return;
   const std::string_view start(head, static_cast<std::size_t>(std::min<std::uint64_t>(size, 84)));
   const std::size_t first = start.find_first_not_of(" \t\r\n");
-  if (first != std::string_view::npos && start.substr(first, 5) == "solid")
+  // VTK calls a file binary when its first 256 bytes hold a byte above 127, even after
+  // "solid", and then trusts the triangle count (a 167-byte file allocated gigabytes): a
+  // "solid" file is ASCII only without such bytes (or NUL, which no text holds).
+  char sniff[256] = {};
+  in.clear();
+  in.seekg(0);
+  in.read(sniff, sizeof sniff);
+  const std::streamsize sniffed = in.gcount();
+  bool binary_bytes = false;
+  for (std::streamsize i = 0; i < sniffed; ++i)
+    binary_bytes = binary_bytes || sniff[i] == '\0' || static_cast<unsigned char>(sniff[i]) > 127;
+  if (first != std::string_view::npos && start.substr(first, 5) == "solid" && !binary_bytes)
     return;
   if (size == 0)
     throw Error(path, 0, "empty file: not an STL file");

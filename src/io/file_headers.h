@@ -22,6 +22,11 @@ namespace detail {
  * bytes after it.
  * \throws segmat::Error with path and header line (0 for a missing or empty file) otherwise.
  */
+/** \brief Throws segmat::Error naming \a path when it is missing or a directory (stream readers
+ * open a directory without complaint and then fail with a message that lacks the path). */
+void
+requireRegularFile(const std::string& path);
+
 void
 checkPlyHeader(const std::string& path);
 

@@ -15,9 +15,15 @@
 #include <segmat/io/polygon_mesh.h>
 
 #include <pcl/PolygonMesh.h>
+#include <pcl/console/print.h>
 #include <pcl/io/ply_io.h>
 // The only file that includes VTK-based PCL I/O (heavy headers, VTK link interface).
 #include <pcl/io/vtk_lib_io.h>
+#include <vtkLogger.h>
+#include <vtkNew.h>
+#include <vtkOutputWindow.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringOutputWindow.h>
 
 #include <functional>
 
@@ -35,11 +41,24 @@ loadWithPcl(const std::string& path, const char* format,
   detail::runPclReader(path, format, [&] { return read(polygons); });
   return detail::withPath(path, [&] { return fromPolygonMesh(polygons); });
 }
+
+// ": REASON" from VTK's captured messages ("... vtkSTLReader (0x...): STLReader: REASON"), or "".
+std::string
+vtkReason(const std::string& text)
+{
+  const std::string tag = "Reader: ";
+  const std::size_t at = text.find(tag);
+  if (at == std::string::npos)
+    return "";
+  const std::size_t start = at + tag.size();
+  return ": " + text.substr(start, text.find('\n', start) - start);
+}
 } // namespace
 
 TriangleMesh
 loadMesh(const std::string& path)
 {
+  detail::requireRegularFile(path);
   const std::string ext = extensionOf(path);
   if (ext == "off")
     return loadOff(path);
@@ -52,9 +71,28 @@ loadMesh(const std::string& path)
     return loadObj(path);
   if (ext == "stl") {
     detail::checkStlSize(path);
-    // Returns the number of points read; VTK reports a bad file by reading none.
-    return loadWithPcl(
-        path, "STL", [&](pcl::PolygonMesh& m) { return pcl::io::loadPolygonFileSTL(path, m) > 0; });
+    // VTK prints its reason through its output window, in terminal colours, and PCL adds a
+    // line of its own: capture VTK's instead, put it into the error, and keep PCL quiet.
+    const vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
+    vtkNew<vtkStringOutputWindow> capture;
+    vtkOutputWindow::SetInstance(capture);
+    const vtkLogger::Verbosity logged = vtkLogger::GetCurrentVerbosityCutoff();
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+    const pcl::console::VERBOSITY_LEVEL verbosity = pcl::console::getVerbosityLevel();
+    pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+    pcl::PolygonMesh polygons;
+    bool read = false;
+    try {
+      // Returns the number of points read; VTK reports a bad file by reading none.
+      read = pcl::io::loadPolygonFileSTL(path, polygons) > 0;
+    } catch (...) {
+    }
+    vtkOutputWindow::SetInstance(previous);
+    vtkLogger::SetStderrVerbosity(logged);
+    pcl::console::setVerbosityLevel(verbosity);
+    if (!read)
+      throw Error(path, 0, "not a readable STL file" + vtkReason(capture->GetOutput()));
+    return detail::withPath(path, [&] { return fromPolygonMesh(polygons); });
   }
   throw Error(path, 0, "unknown mesh format '." + ext + "' (supported: " + kLoadFormats + ")");
 }

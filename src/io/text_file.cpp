@@ -4,6 +4,8 @@
  */
 #include "text_file.h"
 
+#include "file_headers.h"
+
 #include <segmat/common/error.h>
 #include <segmat/io/atomic_file.h>
 
@@ -75,6 +77,7 @@ Tokens::remaining() const
 TextFile::TextFile(const std::string& path, const char* format_name, bool hash_comments)
 : path_(path), format_name_(format_name), hash_comments_(hash_comments)
 {
+  requireRegularFile(path);
   std::ifstream in(path, std::ios::in | std::ios::binary);
   if (!in)
     throw Error(path, 0, "cannot open the file (missing or unreadable)");

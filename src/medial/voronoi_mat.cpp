@@ -2,6 +2,7 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  */
+#include <segmat/common/available_memory.h>
 #include <segmat/geometry/delaunay_3d.h>
 #include <segmat/geometry/surface_sampling.h>
 #include <segmat/geometry/weld_points.h>
@@ -14,6 +15,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -92,7 +94,12 @@ usedVertexBounds(const TriangleMesh& mesh, Eigen::AlignedBox3d& bounds)
     }
   }
   const double diagonal = bounds.diagonal().norm();
-  if (!(diagonal > 0.0) || !std::isfinite(diagonal)) {
+  if (std::isinf(diagonal)) {
+    PCL_ERROR("[segmat::VoronoiMat::compute] The input mesh's coordinates are so large that its "
+              "size overflows (infinite bounding-box diagonal); rescale the mesh.\n");
+    return false;
+  }
+  if (!(diagonal > 0.0)) {
     PCL_ERROR("[segmat::VoronoiMat::compute] The input mesh has no extent.\n");
     return false;
   }
@@ -259,10 +266,29 @@ VoronoiMat::VoronoiMat()
 , threads_(1)
 {}
 
+double
+VoronoiMat::estimateMemoryBytes(const TriangleMesh& mesh, double relative_spacing,
+                                std::size_t max_sample_count)
+{
+  const double candidates =
+      estimateSurfaceSampleCount(mesh, relative_spacing * mesh.boundingBoxDiagonal());
+  const double kept = max_sample_count > 0 ? std::min(candidates, double(max_sample_count))
+                                           : candidates;
+  return candidates * kBytesPerCandidate + kept * kBytesPerSample;
+}
+
 bool
 VoronoiMat::sample(const TriangleMesh& mesh, double diagonal)
 {
   const double spacing = max_spacing_ > 0.0 ? max_spacing_ * diagonal : 0.0;
+  const double need = estimateMemoryBytes(mesh, max_spacing_, max_samples_);
+  if (!surface_samples_ && need > static_cast<double>(availableMemoryBytes())) {
+    PCL_ERROR("[segmat::VoronoiMat::compute] The sampling (spacing %g x the diagonal, sample "
+              "limit %zu) needs about %.3g GB, more than the %.3g GB available: raise the "
+              "spacing or lower the sample limit.\n", max_spacing_, max_samples_, need * 1e-9,
+              static_cast<double>(availableMemoryBytes()) * 1e-9);
+    return false;
+  }
   std::vector<Eigen::Vector3d> candidates, candidate_normals;
   const bool with_normals = surface_samples_ && surface_normals_ &&
                             surface_normals_->size() == surface_samples_->size();

@@ -79,7 +79,6 @@ MeshSegmentation::prepareWorkingMesh()
     return;
   }
   working_mesh_ = denoised;
-  transfer_.setInputMesh(working_mesh_);
 }
 
 void
@@ -141,7 +140,7 @@ MeshSegmentation::getNumberOfThreads() const
 }
 
 bool
-MeshSegmentation::segment(std::vector<int>& face_labels)
+MeshSegmentation::segmentInFrame(std::vector<int>& face_labels)
 {
   face_labels.clear();
   face_labels_.clear();
@@ -164,6 +163,8 @@ MeshSegmentation::segment(std::vector<int>& face_labels)
     prepareWorkingMesh();
     seconds = clock.lap();
   }
+  if (transfer_.getInputMesh() != working_mesh_)
+    transfer_.setInputMesh(working_mesh_); // drops the transfer's face-graph weights
   stage_seconds_.emplace_back("denoise", seconds);
   seconds = 0.0;
   if (!base_) {

@@ -35,6 +35,13 @@ namespace segmat {
 std::vector<Eigen::Vector3d>
 sampleSurface(const TriangleMesh& mesh, double max_spacing);
 
+/** \brief Roughly how many points sampleSurface(mesh, max_spacing) returns (used vertices, plus
+ * L / h per edge, plus area / (h² √3 / 2) per face; an over-estimate), in double so that an absurd
+ * spacing cannot overflow. Lets a caller refuse a spacing before allocating the samples.
+ */
+double
+estimateSurfaceSampleCount(const TriangleMesh& mesh, double max_spacing);
+
 /** \brief Greedy Poisson-disk thinning: visits the points in index order and keeps a point when
  * no kept point lies within `radius` of it.
  *

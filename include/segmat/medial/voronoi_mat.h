@@ -163,6 +163,20 @@ public:
     return max_samples_;
   }
 
+  /** \brief Bytes compute() needs for \a mesh sampled at \a relative_spacing (x the bounding-box
+   * diagonal) with at most \a max_sample_count samples kept (0: all): the candidate samples
+   * (estimateSurfaceSampleCount) at kBytesPerCandidate each plus the kept ones at
+   * kBytesPerSample each (Delaunay tetrahedra, Voronoi vertices, the medial mesh). compute()
+   * refuses to start, with an error, when this exceeds availableMemoryBytes(): an absurd spacing
+   * stops at once instead of swapping.
+   */
+  static double
+  estimateMemoryBytes(const TriangleMesh& mesh, double relative_spacing,
+                      std::size_t max_sample_count);
+
+  static constexpr double kBytesPerCandidate = 200.0; ///< sampling, welding, thinning
+  static constexpr double kBytesPerSample = 4500.0;   ///< peak per kept sample, measured
+
   /** \brief Size of the deterministic jitter relative to the bounding-box diagonal (default 1e-6;
    * 0 disables it, which can make qhull very slow on grid-like input). */
   void

@@ -30,7 +30,7 @@ class MedialMeshEstimation;
  * Stages, each timed (getStageSeconds()):
  *  -. "denoise": the mesh's noise is estimated; a noisy mesh (scanner noise on its vertices)
  *     is smoothed until its triangles turn as little as a clean triangulation's, and every later
- *     stage works on that copy (getWorkingMesh()). The faces, and so the labels, are the
+ *     stage works on that copy. The faces, and so the labels, are the
  *     input's. A clean mesh is used as it is. No parameter: see docs/noise.md.
  *  0. "mat": the base and structured medial meshes from the mesh (MedialMeshEstimation: Voronoi
  *     MAT + Q-MAT, §3), only when none was given (setBaseMat / setStructuredMat);
@@ -155,25 +155,20 @@ public:
    * \return false (PCL_ERROR) when the mesh has no faces, only one medial mesh is given, the
    *         base one is empty, the medial meshes cannot be computed (e.g. a mesh that encloses no
    *         volume), or a stage fails.
+   *
+   * The mesh is segmented in a normalised frame: centred on its bounding box, scaled by a power
+   * of two to a diagonal near 1, vertices and faces in a canonical order (docs/robustness.md).
+   * Translating, scaling or re-ordering the input therefore changes nothing beyond the input's
+   * own rounding; a power-of-two scale changes no label. Labels, parts and the medial meshes
+   * returned are in the input's frame and order; getGraph() is in the normalised frame.
    */
   bool
   segment(std::vector<int>& face_labels);
 
-  /** \brief The mesh the stages worked on: the input, or its denoised copy (same faces). Null
-   * before segment(). */
-  TriangleMesh::ConstPtr
-  getWorkingMesh() const
-  {
-    return working_mesh_;
-  }
-
   /** \brief The noise the last segment() estimated on the input's surface: the Gaussian σ of
    * its vertices' offsets from the surface their neighbours describe, in the mesh's units. */
   double
-  getEstimatedNoise() const
-  {
-    return noise_sigma_;
-  }
+  getEstimatedNoise() const;
 
   /** \brief Smoothing passes the last segment() applied: 0 for a mesh found clean. */
   int
@@ -220,8 +215,16 @@ private:
   void
   dropComputedMats();
 
+  /** \brief segment() on the members as they are (mesh_ already in the normalised frame). */
+  bool
+  segmentInFrame(std::vector<int>& face_labels);
+
+  struct FrameCache; // the normalised copies (src/segmentation/mesh_segmentation_frame.cpp)
+  std::shared_ptr<FrameCache> frame_;
+
   TriangleMesh::ConstPtr mesh_;
-  // The mesh every stage works on: the input, or its denoised copy when the input is noisy.
+  // The mesh every stage works on: the input (in its frame), or its denoised copy when noisy;
+  // noise_sigma_ is in that frame's units.
   TriangleMesh::ConstPtr working_mesh_;
   double noise_sigma_ = 0.0;
   int denoising_passes_ = 0;

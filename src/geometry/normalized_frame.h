@@ -1,0 +1,73 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+// Private to src/: the frame the front classes segment in, so that where a shape lies, how big
+// it is and the order its file lists things in cannot change its parts.
+
+#include <segmat/geometry/medial_mesh.h>
+#include <segmat/geometry/triangle_mesh.h>
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace segmat {
+namespace detail {
+
+/** \brief p ↦ (p − centre) × scale: centred on the bounding box's centre, scaled so that the
+ * diagonal lies in [1/√2, √2).
+ *
+ * The scale is a power of two, so multiplying by it is exact: an input scaled by 2^k maps to
+ * the very same numbers (the centre scales exactly too, and rounding commutes with powers of two),
+ * and every later step sees identical input, hence identical labels. Any other factor would round
+ * differently at each scale. Absolute tolerances inside the pipeline then act at one size.
+ */
+struct NormalizedFrame
+{
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double scale = 1.0; ///< a power of two
+
+  /** \brief The frame of the finite points of \a points (identity when none, or no extent). */
+  static NormalizedFrame
+  of(const std::vector<Eigen::Vector3d>& points);
+
+  Eigen::Vector3d
+  toFrame(const Eigen::Vector3d& p) const
+  {
+    return (p - centre) * scale;
+  }
+
+  Eigen::Vector3d
+  fromFrame(const Eigen::Vector3d& q) const
+  {
+    return q / scale + centre;
+  }
+
+  /** \brief Centres and radii mapped into the frame (toFrame) or back (fromFrame). */
+  MedialMesh
+  toFrame(const MedialMesh& mat) const;
+  MedialMesh
+  fromFrame(const MedialMesh& mat) const;
+};
+
+/** \brief A mesh in its normalised frame with vertices and faces in a canonical order.
+ *
+ * Vertices are sorted by their frame coordinates (x, then y, then z; ties by input index), each
+ * face is rotated to start at its smallest new index (orientation kept), and faces are sorted by
+ * their indices (ties by input order). Two files listing the same surface in different orders
+ * therefore give the same mesh. `face_order[k]` is the input face of canonical face k.
+ */
+struct CanonicalMesh
+{
+  NormalizedFrame frame;
+  TriangleMesh mesh;
+  std::vector<int> face_order;
+};
+
+CanonicalMesh
+canonicalMesh(const TriangleMesh& mesh);
+
+} // namespace detail
+} // namespace segmat
