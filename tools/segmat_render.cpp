@@ -14,7 +14,7 @@
 #include <segmat/io/mesh.h>
 #include <segmat/io/seg.h>
 
-#include "../examples/cli_options.h"
+#include "option_parser.h"
 
 #include <pcl/io/pcd_io.h>
 
@@ -380,8 +380,8 @@ parseSize(const std::string& text, int& width, int& height)
   if (x == std::string::npos)
     return false;
   try {
-    width = static_cast<int>(segmat::cli::parseInteger("--size", text.substr(0, x), 16));
-    height = static_cast<int>(segmat::cli::parseInteger("--size", text.substr(x + 1), 16));
+    width = static_cast<int>(segmat::cli::parseInteger(text.substr(0, x), 16, 16384));
+    height = static_cast<int>(segmat::cli::parseInteger(text.substr(x + 1), 16, 16384));
   }
   catch (const segmat::Error&) {
     return false;
