@@ -131,8 +131,8 @@ mergeByConsensus(const std::vector<std::vector<int>>& labelings,
  *
  * Only a neighbour's part is a candidate because the score favours a small part that other runs
  * hold inside a larger one: every point of that larger part then scores ~1 for the small part.
- * Without the restriction, points all over a noisy box (PSB 321, noise seed 12) joined a small
- * corner part: 0.10 → 0.23 against the first human.
+ * Without the restriction, points all over a noisy box (a box with a smaller box on top) would
+ * join a small corner part that the other runs hold inside the box's part.
  * \param[in] labelings the runs' labelings of the same points (labels >= 0; < 0 skipped)
  * \param[in] edges point pairs that are neighbours (the k-NN graph of the transfer)
  * \param[in,out] labels the labeling to refine (one of the runs', after mergeByConsensus())
@@ -328,8 +328,7 @@ public:
    * move to where the runs agree (detail::voteByConsensus). A cloud counts as
    * noisy when the preprocessing smoothed it (estimated normals, noise above 10 % of the point
    * spacing); clean clouds get one run unless setConsensusForEveryCloudFlag(). Costs one
-   * medial step, growing and transfer per run. Noisy psb-dev clouds over three noise draws
-   * (README, "Eleventh pass"): 1 − RI 0.149 with one run, 0.143 / 0.139 / 0.133 with 5 / 7 / 9. */
+   * medial step, growing and transfer per run. */
   void
   setConsensusRuns(int runs);
 
@@ -345,9 +344,7 @@ public:
    * falls elsewhere in each run, so the other runs join most of what one run split there; a
    * real boundary is cut by all (detail::mergeByConsensus). A run's own vote for its cut counts
    * too: with nine runs, 0.5 asks that five of the other eight join the pair, where 0.4 let four
-   * (a chair's seat and back that four runs grow into one part). Noisy psb-dev clouds over
-   * three noise draws (README, "Twelfth pass"): 1 − RI 0.133 without merging, 0.128 with 0.4;
-   * over nine draws 0.130 with 0.4, 0.129 with 0.5 ("Sixteenth pass"). */
+   * (a chair's seat and back that four runs grow into one part). */
   void
   setConsensusMergeThreshold(double threshold);
 
@@ -364,9 +361,7 @@ public:
    * grow into one part are then joined by the merge, though the runs that cut them cut them
    * in the same place — a noise cut falls somewhere else in each run. The medoid is still
    * chosen among the plainly merged runs (with such cuts kept there, the majority that misses
-   * them would tend to look closer to each other; not measured). Noisy psb-dev clouds
-   * (README, "Twentieth pass"): 1 − RI 0.1280 → 0.1265 over twelve noise draws, 0.1331 →
-   * 0.1298 over the three held out. */
+   * them would tend to look closer to each other). */
   void
   setConsensusKeepReproducedCutsFlag(bool flag)
   {
@@ -381,12 +376,12 @@ public:
   }
 
   /** \brief κ of MatRegionGrowing::setSharedBoundaryMergeFactor() for clouds treated as noisy
-   * (default 0.5, 2 until the seventeenth pass; 0: off). Patches of a noisy cloud's medial mesh
+   * (default 0.5; 0: off). Patches of a noisy cloud's medial mesh
    * that share a long boundary merge without the visibility test: noise cuts plates and rims
    * along lines of spheres, and the pieces of a cut sheet need not see each other through the
    * noisy ball union (a cup's wall cut into strips that share 7–15 spheres each, ~√n of the
-   * smaller strip). Noisy psb-dev clouds (README, "Seventeenth pass"): 1 − RI 0.1381 → 0.1326
-   * on three held-out draws. Clean clouds (and meshes) merge as SEG-MAT does. */
+   * smaller strip; κ = 2 leaves such a wall in many parts). Clean clouds (and meshes) merge as
+   * SEG-MAT does. */
   void
   setNoisyBoundaryMergeFactor(double factor);
 
@@ -400,10 +395,9 @@ public:
   /** \brief For clouds treated as noisy, keep every sphere centre that Q-MAT merges inside the
    * splat surface (MedialMeshEstimation::setKeepCentresInside; default true; clean clouds never
    * test, for speed). A centre outside the shape is wrong by construction, and the mesh path
-   * never allows one. Measured: on noisy thin plates it decides whether a plate becomes its own
-   * part — a chair's back that all nine runs of one noise draw joined to the seat, glasses whose
-   * two lenses most runs joined — though over twelve noise draws of psb-dev the mean is the same
-   * (README, "Eighteenth pass"). Costs ~16 % of a noisy cloud's time. */
+   * never allows one. On noisy thin plates it decides whether a plate becomes its own part: a
+   * chair's back that would join the seat, glasses whose two lenses would join. Costs ~16 % of a
+   * noisy cloud's time. */
   void
   setNoisyCentresInsideFlag(bool flag)
   {
