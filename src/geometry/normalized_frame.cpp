@@ -77,49 +77,14 @@ canonicalMesh(const TriangleMesh& mesh)
   std::vector<Eigen::Vector3d> moved(nv);
   for (int v = 0; v < nv; ++v)
     moved[v] = out.frame.toFrame(mesh.vertices[v]);
-  std::vector<int> vertex_order(nv);
-  std::iota(vertex_order.begin(), vertex_order.end(), 0);
-  const auto lexLess = [&](int a, int b) {
-    const Eigen::Vector3d &p = moved[a], &q = moved[b];
-    if (p.x() != q.x())
-      return p.x() < q.x();
-    if (p.y() != q.y())
-      return p.y() < q.y();
-    return p.z() < q.z();
-  };
-  // Non-finite coordinates have no order: such a mesh keeps its own (and fails later anyway).
-  if (std::all_of(moved.begin(), moved.end(), [](const Eigen::Vector3d& p) { return p.allFinite(); }))
-    std::stable_sort(vertex_order.begin(), vertex_order.end(), lexLess);
-  std::vector<int> new_index(nv);
-  out.mesh.vertices.resize(nv);
-  for (int k = 0; k < nv; ++k) {
-    new_index[vertex_order[k]] = k;
-    out.mesh.vertices[k] = moved[vertex_order[k]];
-  }
-  const int nf = static_cast<int>(mesh.faces.size());
-  std::vector<Eigen::Vector3i> faces(nf);
-  for (int f = 0; f < nf; ++f) {
-    Eigen::Vector3i face = mesh.faces[f];
-    const bool valid = face.minCoeff() >= 0 && face.maxCoeff() < nv;
-    if (valid)
-      for (int k = 0; k < 3; ++k)
-        face[k] = new_index[face[k]];
-    // Rotate (keeps the orientation) so that the smallest index comes first.
-    int first = 0;
-    for (int k = 1; k < 3; ++k)
-      if (face[k] < face[first])
-        first = k;
-    faces[f] = Eigen::Vector3i(face[first], face[(first + 1) % 3], face[(first + 2) % 3]);
-  }
-  out.face_order.resize(nf);
+  // The input's vertex and face order is kept: sorting them lexicographically made every
+  // order give the same labels, but it also moves the samples' index-hashed jitter and the
+  // order of equal-cost choices, and on psb-dev it cost 0.017 of 1 − RI. Reordered input
+  // therefore gives labels that differ as much as any change of those choices does.
+  out.mesh.vertices = std::move(moved);
+  out.mesh.faces = mesh.faces;
+  out.face_order.resize(mesh.faces.size());
   std::iota(out.face_order.begin(), out.face_order.end(), 0);
-  std::stable_sort(out.face_order.begin(), out.face_order.end(), [&](int a, int b) {
-    return std::lexicographical_compare(faces[a].data(), faces[a].data() + 3, faces[b].data(),
-                                        faces[b].data() + 3);
-  });
-  out.mesh.faces.resize(nf);
-  for (int k = 0; k < nf; ++k)
-    out.mesh.faces[k] = faces[out.face_order[k]];
   return out;
 }
 

@@ -52,12 +52,8 @@ struct NormalizedFrame
   fromFrame(const MedialMesh& mat) const;
 };
 
-/** \brief A mesh in its normalised frame with vertices and faces in a canonical order.
- *
- * Vertices are sorted by their frame coordinates (x, then y, then z; ties by input index), each
- * face is rotated to start at its smallest new index (orientation kept), and faces are sorted by
- * their indices (ties by input order). Two files listing the same surface in different orders
- * therefore give the same mesh. `face_order[k]` is the input face of canonical face k.
+/** \brief A mesh in its normalised frame, vertices and faces in the input's order
+ * (`face_order[k]` is the input face of face k: the identity; see canonicalMesh()).
  */
 struct CanonicalMesh
 {

@@ -2,8 +2,8 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  *
- * MeshSegmentation::segment(): the pipeline (segmentInFrame) runs on a normalised, canonically
- * ordered copy of the mesh, and its results are mapped back to the input's frame and order.
+ * MeshSegmentation::segment(): the pipeline (segmentInFrame) runs on a copy of the mesh in its
+ * normalised frame, and its results are mapped back to the input's frame.
  */
 #include <segmat/segmentation/mesh_segmentation.h>
 
@@ -14,9 +14,9 @@ namespace segmat {
 struct MeshSegmentation::FrameCache
 {
   TriangleMesh::ConstPtr source;  // the input mesh the copy was made from
-  TriangleMesh::ConstPtr mesh;    // its normalised, canonical copy
+  TriangleMesh::ConstPtr mesh;    // its copy in the normalised frame
   detail::NormalizedFrame frame;
-  std::vector<int> face_order;    // canonical face k = input face face_order[k]
+  std::vector<int> face_order;    // face k of the copy = input face face_order[k]
   // Given MATs: the caller's pointers and their frame copies.
   MedialMesh::ConstPtr given_base, given_structured, base, structured;
   // Computed MATs: in the frame (what the pipeline holds) and in the input's frame (returned).
