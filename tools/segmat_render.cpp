@@ -16,6 +16,8 @@
 
 #include "option_parser.h"
 
+#include <pcl/console/print.h>
+
 #include <pcl/io/pcd_io.h>
 
 #include <vtkActor.h>
@@ -62,7 +64,7 @@ namespace {
 
 const char* const kUsage =
     "usage: segmat_render SHAPE LABELS -o PICTURE.png [--view front|three-quarter|top|all]\n"
-    "                     [--size WxH] [--part-ids]\n"
+    "                     [--size WxH] [--part-ids] [--boxes BOXES.ply]\n"
     "  SHAPE         mesh (.off, .obj, .stl, .ply with faces) or point cloud (.pcd, .xyz,\n"
     "                .txt, .ply without faces)\n"
     "  LABELS        one label per face (mesh) or per point (cloud), one per line (.seg,\n"
@@ -72,6 +74,7 @@ const char* const kUsage =
     "                above), top (along -y), or all three side by side (default three-quarter)\n"
     "  --size WxH    picture size in pixels (default 800x600; 1800x600 with --view all)\n"
     "  --part-ids    write each part's label at its centre\n"
+    "  --boxes FILE  also draw the part boxes (PREFIX_boxes.ply of --boxes) as dark edges\n"
     "Parts have the colours of segmat_mesh's and segmat_cloud's coloured PLY; unlabelled (-1)\n"
     "is grey. Without DISPLAY the program starts its own Xvfb (Debian: xvfb).\n"
     "Exit status: 0 success, 2 bad usage or a missing or malformed input, 1 rendering failed.\n";
@@ -227,6 +230,46 @@ makeActor(const Shape& shape, int point_size)
   return actor;
 }
 
+/// The edges of \a boxes (a triangulated box mesh, PREFIX_boxes.ply): every quad of a box is two
+/// triangles, so only edges with a crease (the box's own edges) are drawn, in dark grey over the
+/// shape.
+vtkSmartPointer<vtkActor>
+makeBoxesActor(const segmat::TriangleMesh& boxes)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const Eigen::Vector3d& p : boxes.vertices)
+    points->InsertNextPoint(p.x(), p.y(), p.z());
+  // An edge is drawn when its two faces are not coplanar (the quads' diagonals are).
+  std::map<std::pair<int, int>, std::vector<int>> edge_faces;
+  for (std::size_t f = 0; f < boxes.faces.size(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      const int a = boxes.faces[f][c], b = boxes.faces[f][(c + 1) % 3];
+      edge_faces[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(f));
+    }
+  vtkNew<vtkCellArray> lines;
+  for (const auto& [edge, faces] : edge_faces) {
+    const bool crease = faces.size() != 2 ||
+                        boxes.faceNormal(faces[0]).dot(boxes.faceNormal(faces[1])) < 0.999;
+    if (!crease)
+      continue;
+    const vtkIdType ids[2] = {edge.first, edge.second};
+    lines->InsertNextCell(2, ids);
+  }
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(points);
+  poly->SetLines(lines);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(poly);
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.15, 0.15, 0.15);
+  actor->GetProperty()->SetLineWidth(2.0f);
+  actor->GetProperty()->SetLighting(false);
+  return actor;
+}
+
 /// Looks at \a points from direction \a toward_eye with \a up, in parallel projection, their
 /// projection centred and fitted to the viewport with a 5 % margin.
 void
@@ -319,7 +362,7 @@ views()
 /// Renders \a shape and writes the PNG (atomically).
 void
 render(const Shape& shape, const std::string& view_name, int width, int height, bool part_ids,
-       const std::string& out_path)
+       const segmat::TriangleMesh* boxes, const std::string& out_path)
 {
   std::vector<View> chosen;
   for (const View& v : views())
@@ -342,6 +385,8 @@ render(const Shape& shape, const std::string& view_name, int width, int height, 
     renderer->SetViewport(double(k) / chosen.size(), 0.0, double(k + 1) / chosen.size(), 1.0);
     renderer->SetBackground(1.0, 1.0, 1.0);
     renderer->AddActor(makeActor(shape, point_size));
+    if (boxes)
+      renderer->AddActor(makeBoxesActor(*boxes));
     renderer->TwoSidedLightingOn();
     window->AddRenderer(renderer);
     placeCamera(renderer, shape.points, chosen[k].toward_eye, chosen[k].up,
@@ -452,7 +497,7 @@ private:
 int
 main(int argc, char** argv)
 {
-  std::string shape_path, labels_path, out_path, view = "three-quarter";
+  std::string shape_path, labels_path, out_path, boxes_path, view = "three-quarter";
   int width = 0, height = 0;
   bool part_ids = false;
   for (int i = 1; i < argc; ++i) {
@@ -462,7 +507,7 @@ main(int argc, char** argv)
       std::cout << kUsage;
       return 0;
     }
-    if ((arg == "-o" || arg == "--view" || arg == "--size") && !has_value) {
+    if ((arg == "-o" || arg == "--view" || arg == "--size" || arg == "--boxes") && !has_value) {
       std::cerr << "segmat_render: option " << arg << " needs a value\n" << kUsage;
       return 2;
     }
@@ -485,6 +530,8 @@ main(int argc, char** argv)
     }
     else if (arg == "--part-ids")
       part_ids = true;
+    else if (arg == "--boxes")
+      boxes_path = argv[++i];
     else if (!arg.empty() && arg[0] == '-') {
       std::cerr << "segmat_render: unknown option " << arg << "\n" << kUsage;
       return 2;
@@ -508,8 +555,16 @@ main(int argc, char** argv)
   }
 
   Shape shape;
+  segmat::TriangleMesh boxes;
   try {
     shape = loadShape(shape_path, labels_path);
+    if (!boxes_path.empty()) {
+      // The boxes' face colours are PLY properties PCL's mesh reader does not take: not a fault.
+      pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
+      boxes = segmat::io::loadMesh(boxes_path);
+      if (boxes.empty())
+        throw segmat::Error(boxes_path, 0, "no box faces to draw");
+    }
   }
   catch (const std::exception& e) {
     std::cerr << "segmat_render: " << e.what() << "\n";
@@ -517,7 +572,7 @@ main(int argc, char** argv)
   }
   try { // X only after the inputs are checked: bad input fails fast
     const PrivateXvfb xvfb;
-    render(shape, view, width, height, part_ids, out_path);
+    render(shape, view, width, height, part_ids, boxes_path.empty() ? nullptr : &boxes, out_path);
   }
   catch (const std::exception& e) {
     std::cerr << "segmat_render: " << out_path << ": " << e.what() << "\n";

@@ -49,6 +49,25 @@ class RenderTest(unittest.TestCase):
             self.assertEqual(status, 0, err)
             self.check_picture(out, 600, 300, self.colors)
 
+    def test_boxes_are_drawn_over_the_parts(self):
+        # segmat_mesh --boxes writes the boxes; segmat_render --boxes draws their edges in dark
+        # grey (38, 38, 38), a colour no part has, so the picture gains many such pixels.
+        prefix = os.path.join(self.tmp, "boxes")
+        status, _, err = fixtures.run(
+            [fixtures.program("segmat_mesh"), self.mesh, "-o", prefix, "--boxes", "-q"])
+        self.assertEqual(status, 0, err)
+        dark = {}
+        for name, extra in (("plain", []), ("boxes", ["--boxes", prefix + "_boxes.ply"])):
+            out = os.path.join(self.tmp, f"{name}.png")
+            status, _, err = fixtures.run(
+                [fixtures.program("segmat_render"), self.mesh, prefix + ".seg", "-o", out,
+                 "--size", "400x300", *extra], {"DISPLAY": ""})
+            self.assertEqual(status, 0, err)
+            _, _, rows = fixtures.read_png(out)
+            dark[name] = sum(1 for row in rows for p in row if max(p) <= 60 and
+                             max(p) - min(p) <= 8)
+        self.assertGreater(dark["boxes"], dark["plain"] + 200, dark)
+
     def test_cloud_points_coloured_by_part(self):
         # The mesh's vertices as a cloud, each labelled like its first face.
         with open(self.mesh) as f:

@@ -30,8 +30,9 @@ def find_program(name, bin_dir):
     return shutil.which(name)
 
 
-# The parallelism is across shapes (--jobs): one thread per program unless the user sets
-# OMP_NUM_THREADS (segmat_cloud would otherwise take every core in every job).
+# The parallelism is across shapes (--jobs): one thread per program (--threads, and
+# OMP_NUM_THREADS for OpenMP) unless the user sets OMP_NUM_THREADS; the programs would
+# otherwise take every core in every job.
 # (Read at each start: the runner sets DISPLAY when it starts Xvfb.)
 def _child_env():
     return dict(os.environ, OMP_NUM_THREADS=os.environ.get("OMP_NUM_THREADS", "1"))
@@ -181,7 +182,8 @@ class Runner:
         program = "segmat_mesh" if shape.kind == "mesh" else "segmat_cloud"
         prefix = os.path.join(work, shape.name)
         stdout, seconds, peak = self._run(
-            [self.options.programs[program], shape.path, "-o", prefix, "--json"], deadline,
+            [self.options.programs[program], shape.path, "-o", prefix, "--json", "--threads",
+             os.environ.get("OMP_NUM_THREADS", "1")], deadline,
             memory_limit=True)
         result = json.loads(stdout.strip().splitlines()[-1])
         record["parts"] = result["parts"]
