@@ -9,7 +9,7 @@
 #include <segmat/common/error.h>
 #include <segmat/evaluation/psb_metrics.h>
 #include <segmat/io/mesh.h>
-#include <segmat/medial/medial_mesh_estimation.h>
+#include <segmat/segmentation/mesh_segmentation.h>
 
 #include <pcl/common/colors.h>
 
@@ -52,16 +52,20 @@ bindTools(py::module_& m)
           throw py::value_error("medial_mesh(): spheres=" + std::to_string(spheres) +
                                 " is not >= 1");
         const segmat::TriangleMesh::Ptr mesh = toMesh(vertices, faces);
-        auto base = std::make_shared<segmat::MedialMesh>();
-        auto coarse = std::make_shared<segmat::MedialMesh>();
+        segmat::MedialMesh::ConstPtr base, coarse;
         bool ok = false;
         {
+          // Through MeshSegmentation, so that these are the medial meshes it segments with
+          // (normalised frame, noise removed first); the parts it also finds are dropped.
           py::gil_scoped_release release;
-          segmat::MedialMeshEstimation estimation;
-          estimation.setInputMesh(mesh);
-          estimation.setBaseTarget(spheres);
-          estimation.setNumberOfThreads(threads);
-          ok = estimation.compute(*base, *coarse);
+          segmat::MeshSegmentation segmentation;
+          segmentation.setInputMesh(mesh);
+          segmentation.setBaseMatTarget(spheres);
+          segmentation.setNumberOfThreads(threads);
+          std::vector<int> labels;
+          ok = segmentation.segment(labels);
+          base = segmentation.getBaseMat();
+          coarse = segmentation.getStructuredMat();
         }
         if (!ok)
           throw segmat::Error("medial_mesh(): the medial mesh cannot be computed; the message "

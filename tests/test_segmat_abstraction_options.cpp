@@ -154,7 +154,7 @@ TEST(SegmatCloudOptions, BoxesHoldTheirPoints)
   const auto cloud = test::dumbbellCloud(4000, 3).toPointNormal();
   const std::string input = test::scratchDir() + "dumbbell_boxes.pcd";
   ASSERT_EQ(pcl::io::savePCDFileBinary(input, *cloud), 0);
-  const std::string prefix = test::scratchDir() + "dumbbell_boxes";
+  const std::string prefix = test::scratchDir() + "dumbbell_parts"; // not the input's name
   const test::ProgramRun run =
       test::runProgram("segmat_cloud", input + " -o " + prefix + " --boxes --threads 1");
   ASSERT_EQ(run.status, 0) << run.err;

@@ -30,6 +30,8 @@ struct MedialMeshFit
   double outside_fraction = 0.05; ///< centres allowed away from the surface's inside
 
   /** \brief Checks \a mat against \a mesh.
+   * \param[in] mat the medial mesh (spheres) to check
+   * \param[in] mesh the surface it should belong to
    * \param[out] reason when false is returned: what does not fit, naming a sphere (0-based
    *             index) where one is at fault
    * \return true when \a mat passes every check (an empty mat passes) */
