@@ -346,17 +346,20 @@ checkStlSize(const std::string& path)
     return;
   const std::string_view start(head, static_cast<std::size_t>(std::min<std::uint64_t>(size, 84)));
   const std::size_t first = start.find_first_not_of(" \t\r\n");
-  // VTK calls a file binary when its first 256 bytes hold a byte above 127, even after
-  // "solid", and then trusts the triangle count (a 167-byte file allocated gigabytes): a
-  // "solid" file is ASCII only without such bytes (or NUL, which no text holds).
+  // VTK calls a file binary when its first 256 bytes hold a byte above 127 or a control byte,
+  // even after "solid", and then trusts the triangle count (a 167-byte file allocated
+  // gigabytes): a "solid" file is ASCII only without such bytes (text holds no control byte
+  // but tab, line feed, carriage return, vertical tab and form feed).
   char sniff[256] = {};
   in.clear();
   in.seekg(0);
   in.read(sniff, sizeof sniff);
   const std::streamsize sniffed = in.gcount();
   bool binary_bytes = false;
-  for (std::streamsize i = 0; i < sniffed; ++i)
-    binary_bytes = binary_bytes || sniff[i] == '\0' || static_cast<unsigned char>(sniff[i]) > 127;
+  for (std::streamsize i = 0; i < sniffed; ++i) {
+    const unsigned char c = static_cast<unsigned char>(sniff[i]);
+    binary_bytes = binary_bytes || c > 127 || (c < 32 && (c < '\t' || c > '\r'));
+  }
   if (first != std::string_view::npos && start.substr(first, 5) == "solid" && !binary_bytes)
     return;
   if (size == 0)
