@@ -87,6 +87,7 @@ struct SurfaceDenoising
   SurfaceNoise noise; ///< estimated before smoothing
   int passes = 0;     ///< smoothing passes that moved the samples
   double face_turn_degrees = 0.0; ///< meshes: median turn of a face to its flattest neighbour
+  int normal_iterations = 0;      ///< meshes: bilateral normal filtering iterations
 };
 
 /** \brief Moves noisy surface samples back onto their surface; leaves clean ones alone.
@@ -118,7 +119,8 @@ medianFaceTurn(const std::vector<Eigen::Vector3d>& vertices,
 /** \brief denoiseSurface() of a mesh's vertices when medianFaceTurn() reaches \a noisy_degrees:
  * close = two rings around a vertex, wide = the rings until they hold \a k vertices (at most
  * three rings). Edges never join the two sides of a thin wall, so a wall thinner than the noise
- * keeps both of its sides. A mesh found clean is left exactly as it is.
+ * keeps both of its sides. Then bilateralNormalFilter() gives back the creases that the
+ * quadratic fits rounded. A mesh found clean is left exactly as it is.
  */
 SurfaceDenoising
 denoiseMeshSurface(std::vector<Eigen::Vector3d>& vertices,

@@ -1,0 +1,157 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "bilateral_normal_filter.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace segmat {
+namespace detail {
+namespace {
+
+bool
+validFace(const Eigen::Vector3i& f, std::size_t vertex_count)
+{
+  for (int c = 0; c < 3; ++c)
+    if (f[c] < 0 || std::size_t(f[c]) >= vertex_count)
+      return false;
+  return f[0] != f[1] && f[1] != f[2] && f[0] != f[2];
+}
+
+struct FaceGeometry
+{
+  std::vector<Eigen::Vector3d> normals, centroids;
+  std::vector<double> areas;
+};
+
+void
+faceGeometry(const std::vector<Eigen::Vector3d>& vertices,
+             const std::vector<Eigen::Vector3i>& faces, const std::vector<char>& valid,
+             FaceGeometry& g)
+{
+  const std::size_t nf = faces.size();
+  g.normals.assign(nf, Eigen::Vector3d::Zero());
+  g.centroids.assign(nf, Eigen::Vector3d::Zero());
+  g.areas.assign(nf, 0.0);
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (!valid[f])
+      continue;
+    const Eigen::Vector3d& a = vertices[faces[f][0]];
+    const Eigen::Vector3d& b = vertices[faces[f][1]];
+    const Eigen::Vector3d& c = vertices[faces[f][2]];
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    g.centroids[f] = (a + b + c) / 3.0;
+    g.areas[f] = 0.5 * n.norm();
+    if (g.areas[f] > 0.0)
+      g.normals[f] = n.normalized();
+  }
+}
+
+} // namespace
+
+NormalFiltering
+bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
+                      const std::vector<Eigen::Vector3i>& faces, double range_sigma,
+                      int max_iterations, double still_degrees, int vertex_iterations, int threads)
+{
+  NormalFiltering result;
+  const std::size_t nv = vertices.size(), nf = faces.size();
+  std::vector<char> valid(nf, 0);
+  std::vector<std::vector<int>> vertex_faces(nv);
+  for (std::size_t f = 0; f < nf; ++f) {
+    valid[f] = validFace(faces[f], nv);
+    if (valid[f])
+      for (int c = 0; c < 3; ++c)
+        vertex_faces[faces[f][c]].push_back(int(f));
+  }
+  // Neighbours of a face: every other face that shares a vertex with it.
+  std::vector<std::vector<int>> neighbours(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (!valid[f])
+      continue;
+    std::vector<int>& around = neighbours[f];
+    for (int c = 0; c < 3; ++c)
+      around.insert(around.end(), vertex_faces[faces[f][c]].begin(),
+                    vertex_faces[faces[f][c]].end());
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    around.erase(std::remove(around.begin(), around.end(), int(f)), around.end());
+  }
+
+  FaceGeometry g;
+  faceGeometry(vertices, faces, valid, g);
+  // σ_s from the faces that share an edge (two vertices).
+  double distance_sum = 0.0;
+  std::size_t pairs = 0;
+  for (std::size_t f = 0; f < nf; ++f)
+    for (int j : neighbours[f]) {
+      int shared = 0;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+          shared += faces[f][a] == faces[j][b];
+      if (shared == 2) {
+        distance_sum += (g.centroids[f] - g.centroids[j]).norm();
+        ++pairs;
+      }
+    }
+  if (pairs == 0)
+    return result;
+  const double sigma_s = distance_sum / double(pairs);
+  result.spatial_sigma = sigma_s;
+  const double inv_s = 1.0 / (2.0 * sigma_s * sigma_s);
+  const double inv_r = 1.0 / (2.0 * range_sigma * range_sigma);
+  const double still = 1.0 - std::cos(still_degrees * M_PI / 180.0);
+
+  std::vector<Eigen::Vector3d> normals = g.normals, next(nf);
+  for (int it = 0; it < max_iterations; ++it) {
+    double turned = 0.0;
+    int counted = 0;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(+ : turned, counted)
+    for (long f = 0; f < long(nf); ++f) {
+      next[f] = normals[f];
+      if (normals[f].isZero())
+        continue;
+      Eigen::Vector3d sum = g.areas[f] * normals[f];
+      for (int j : neighbours[f]) {
+        if (normals[j].isZero())
+          continue;
+        const double ds = (g.centroids[f] - g.centroids[j]).squaredNorm();
+        const double dr = (normals[f] - normals[j]).squaredNorm();
+        sum += g.areas[j] * std::exp(-ds * inv_s - dr * inv_r) * normals[j];
+      }
+      if (sum.norm() > 0.0)
+        next[f] = sum.normalized();
+      turned += 1.0 - next[f].dot(normals[f]);
+      ++counted;
+    }
+    normals.swap(next);
+    ++result.normal_iterations;
+    if (counted == 0 || turned / counted < still)
+      break;
+  }
+
+  // Vertices onto the planes of their faces (Jacobi steps: the result is independent of order).
+  std::vector<Eigen::Vector3d> moved(nv);
+  for (int it = 0; it < vertex_iterations; ++it) {
+    faceGeometry(vertices, faces, valid, g);
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (long v = 0; v < long(nv); ++v) {
+      moved[v] = vertices[v];
+      if (vertex_faces[v].empty())
+        continue;
+      Eigen::Vector3d step = Eigen::Vector3d::Zero();
+      for (int f : vertex_faces[v])
+        step += normals[f] * normals[f].dot(g.centroids[f] - vertices[v]);
+      moved[v] += step / double(vertex_faces[v].size());
+    }
+    vertices.swap(moved);
+  }
+  return result;
+}
+
+} // namespace detail
+} // namespace segmat
