@@ -23,9 +23,9 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
-#include <vtkCellData.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -62,30 +62,17 @@
 
 namespace {
 
-const char* const kUsage =
-    "usage: segmat_render SHAPE LABELS -o PICTURE.png [--view front|three-quarter|top|all]\n"
-    "                     [--size WxH] [--part-ids] [--boxes BOXES.ply]\n"
-    "  SHAPE         mesh (.off, .obj, .stl, .ply with faces) or point cloud (.pcd, .xyz,\n"
-    "                .txt, .ply without faces)\n"
-    "  LABELS        one label per face (mesh) or per point (cloud), one per line (.seg,\n"
-    "                .labels), or a labelled PCD (x y z label, as segmat_cloud writes)\n"
-    "  -o FILE       the PNG to write (whole or not at all)\n"
-    "  --view V      camera: front (along -z, y up), three-quarter (45 deg around y, 30 deg\n"
-    "                above), top (along -y), or all three side by side (default three-quarter)\n"
-    "  --size WxH    picture size in pixels (default 800x600; 1800x600 with --view all)\n"
-    "  --part-ids    write each part's label at its centre\n"
-    "  --boxes FILE  also draw the part boxes (PREFIX_boxes.ply of --boxes) as dark edges\n"
-    "Parts have the colours of segmat_mesh's and segmat_cloud's coloured PLY; unlabelled (-1)\n"
-    "is grey. Without DISPLAY the program starts its own Xvfb (Debian: xvfb).\n"
-    "Exit status: 0 success, 2 bad usage or a missing or malformed input, 1 rendering failed.\n";
-
 /// The shape as drawn: triangles (mesh) or none (cloud), one label per face or point.
 struct Shape
 {
   std::vector<Eigen::Vector3d> points;
   std::vector<std::array<int, 3>> faces;
   std::vector<int> labels;
-  bool isCloud() const { return faces.empty(); }
+  bool
+  isCloud() const
+  {
+    return faces.empty();
+  }
 };
 
 bool
@@ -123,10 +110,9 @@ loadShape(const std::string& shape_path, const std::string& labels_path)
       const segmat::TriangleMesh mesh = segmat::io::loadMesh(shape_path);
       shape.points = mesh.vertices;
       for (const auto& f : mesh.faces)
-        shape.faces.push_back({static_cast<int>(f[0]), static_cast<int>(f[1]),
-                               static_cast<int>(f[2])});
-    }
-    catch (const segmat::Error&) {
+        shape.faces.push_back(
+            {static_cast<int>(f[0]), static_cast<int>(f[1]), static_cast<int>(f[2])});
+    } catch (const segmat::Error&) {
       if (ext != "ply") // a PLY may hold a cloud: read it as one below
         throw;
     }
@@ -187,8 +173,7 @@ toPolyData(const Shape& shape)
   if (shape.isCloud()) {
     poly->SetVerts(cells);
     poly->GetPointData()->SetScalars(colors);
-  }
-  else {
+  } else {
     poly->SetPolys(cells);
     poly->GetCellData()->SetScalars(colors);
   }
@@ -249,8 +234,8 @@ makeBoxesActor(const segmat::TriangleMesh& boxes)
     }
   vtkNew<vtkCellArray> lines;
   for (const auto& [edge, faces] : edge_faces) {
-    const bool crease = faces.size() != 2 ||
-                        boxes.faceNormal(faces[0]).dot(boxes.faceNormal(faces[1])) < 0.999;
+    const bool crease =
+        faces.size() != 2 || boxes.faceNormal(faces[0]).dot(boxes.faceNormal(faces[1])) < 0.999;
     if (!crease)
       continue;
     const vtkIdType ids[2] = {edge.first, edge.second};
@@ -352,10 +337,9 @@ const std::vector<View>&
 views()
 {
   static const double c30 = std::cos(M_PI / 6), s30 = std::sin(M_PI / 6), s45 = std::sqrt(0.5);
-  static const std::vector<View> all{
-      {"front", {0, 0, 1}, {0, 1, 0}},
-      {"three-quarter", {s45 * c30, s30, s45 * c30}, {0, 1, 0}},
-      {"top", {0, 1, 0}, {0, 0, -1}}};
+  static const std::vector<View> all{{"front", {0, 0, 1}, {0, 1, 0}},
+                                     {"three-quarter", {s45 * c30, s30, s45 * c30}, {0, 1, 0}},
+                                     {"top", {0, 1, 0}, {0, 0, -1}}};
   return all;
 }
 
@@ -375,11 +359,11 @@ render(const Shape& shape, const std::string& view_name, int width, int height, 
   const int panel_height = height, panel_width = width / static_cast<int>(chosen.size());
   // Points about as wide as their spacing on screen (a third of the panel covered, half of the
   // points facing the camera), so a sparse cloud still reads as a surface.
-  const double spacing =
-      std::sqrt(0.3 * panel_width * panel_height / (0.5 * std::max<std::size_t>(1, shape.points.size())));
+  const double spacing = std::sqrt(0.3 * panel_width * panel_height /
+                                   (0.5 * std::max<std::size_t>(1, shape.points.size())));
   const int point_size = static_cast<int>(std::clamp(1.2 * spacing, 2.0, 12.0));
-  const std::map<int, Eigen::Vector3d> centres = part_ids ? partCentres(shape)
-                                                          : std::map<int, Eigen::Vector3d>{};
+  const std::map<int, Eigen::Vector3d> centres =
+      part_ids ? partCentres(shape) : std::map<int, Eigen::Vector3d>{};
   for (std::size_t k = 0; k < chosen.size(); ++k) {
     vtkNew<vtkRenderer> renderer;
     renderer->SetViewport(double(k) / chosen.size(), 0.0, double(k + 1) / chosen.size(), 1.0);
@@ -427,8 +411,7 @@ parseSize(const std::string& text, int& width, int& height)
   try {
     width = static_cast<int>(segmat::cli::parseInteger(text.substr(0, x), 16, 16384));
     height = static_cast<int>(segmat::cli::parseInteger(text.substr(x + 1), 16, 16384));
-  }
-  catch (const segmat::Error&) {
+  } catch (const segmat::Error&) {
     return false;
   }
   return width <= 8192 && height <= 8192;
@@ -458,8 +441,8 @@ public:
       dup2(null, 1);
       dup2(null, 2);
       const std::string fd = std::to_string(fds[1]);
-      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "2048x2048x24",
-             "-nolisten", "tcp", static_cast<char*>(nullptr));
+      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "2048x2048x24", "-nolisten",
+             "tcp", static_cast<char*>(nullptr));
       _exit(127);
     }
     close(fds[1]);
@@ -475,12 +458,17 @@ public:
     }
     setenv("DISPLAY", (":" + number).c_str(), 1);
   }
-  ~PrivateXvfb() { stop(); }
+  ~PrivateXvfb()
+  {
+    stop();
+  }
   PrivateXvfb(const PrivateXvfb&) = delete;
-  PrivateXvfb& operator=(const PrivateXvfb&) = delete;
+  PrivateXvfb&
+  operator=(const PrivateXvfb&) = delete;
 
 private:
-  void stop()
+  void
+  stop()
   {
     if (pid_ <= 0)
       return;
@@ -492,63 +480,53 @@ private:
   pid_t pid_ = 0;
 };
 
-} // namespace
-
 int
-main(int argc, char** argv)
+run(int argc, char** argv)
 {
+  using namespace segmat::cli;
   std::string shape_path, labels_path, out_path, boxes_path, view = "three-quarter";
   int width = 0, height = 0;
   bool part_ids = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool has_value = i + 1 < argc;
-    if (arg == "-h" || arg == "--help") {
-      std::cout << kUsage;
-      return 0;
-    }
-    if ((arg == "-o" || arg == "--view" || arg == "--size" || arg == "--boxes") && !has_value) {
-      std::cerr << "segmat_render: option " << arg << " needs a value\n" << kUsage;
-      return 2;
-    }
-    if (arg == "-o")
-      out_path = argv[++i];
-    else if (arg == "--view") {
-      view = argv[++i];
-      if (view != "all" && std::none_of(views().begin(), views().end(),
-                                        [&](const View& v) { return view == v.name; })) {
-        std::cerr << "segmat_render: unknown view '" << view << "'\n" << kUsage;
-        return 2;
-      }
-    }
-    else if (arg == "--size") {
-      if (!parseSize(argv[++i], width, height)) {
-        std::cerr << "segmat_render: --size wants WxH, 16 to 8192 each (e.g. 800x600), not '"
-                  << argv[i] << "'\n";
-        return 2;
-      }
-    }
-    else if (arg == "--part-ids")
-      part_ids = true;
-    else if (arg == "--boxes")
-      boxes_path = argv[++i];
-    else if (!arg.empty() && arg[0] == '-') {
-      std::cerr << "segmat_render: unknown option " << arg << "\n" << kUsage;
-      return 2;
-    }
-    else if (shape_path.empty())
-      shape_path = arg;
-    else if (labels_path.empty())
-      labels_path = arg;
-    else {
-      std::cerr << "segmat_render: unexpected argument " << arg << "\n" << kUsage;
-      return 2;
-    }
-  }
-  if (shape_path.empty() || labels_path.empty() || out_path.empty()) {
-    std::cerr << "segmat_render: SHAPE, LABELS and -o are required\n" << kUsage;
-    return 2;
-  }
+  OptionParser parser(
+      "segmat_render", "SHAPE LABELS -o PICTURE.png [options]",
+      "Draws a mesh or a point cloud coloured by part, with the colours of segmat_mesh's and\n"
+      "segmat_cloud's coloured PLY (unlabelled, -1, is grey). Without DISPLAY the program\n"
+      "starts its own Xvfb (Debian: xvfb).",
+      "segmat_render data/teddy/teddy.off teddy.seg -o teddy.png");
+  parser.positional("SHAPE",
+                    "mesh (.off, .obj, .stl, .ply with faces) or point cloud (.pcd, .xyz,\n"
+                    ".txt, .ply without faces)",
+                    shape_path);
+  parser.positional("LABELS",
+                    "one label per face (mesh) or per point (cloud), one per line\n"
+                    "(.seg, .labels), or a labelled PCD (x y z label)",
+                    labels_path);
+  parser.add(kOutput, "-o", "FILE", "the PNG to write (whole or not at all)",
+             [&](const std::string& v) { out_path = v; });
+  parser.add(kOutput, "--view", "V",
+             "camera: front (along -z, y up), three-quarter (45 deg around y, 30 deg\n"
+             "above), top (along -y), or all three side by side (default three-quarter)",
+             [&](const std::string& v) {
+               if (v != "all" && std::none_of(views().begin(), views().end(),
+                                              [&](const View& w) { return v == w.name; }))
+                 throw segmat::Error("unknown view '" + v + "'");
+               view = v;
+             });
+  parser.add(kOutput, "--size", "WxH",
+             "picture size in pixels, 16 to 8192 each (default 800x600; 1800x600\n"
+             "with --view all)",
+             [&](const std::string& v) {
+               if (!parseSize(v, width, height))
+                 throw segmat::Error("wants WxH, 16 to 8192 each (e.g. 800x600), not '" + v + "'");
+             });
+  parser.flag(kOutput, "--part-ids", "write each part's label at its centre", part_ids);
+  parser.add(kInput, "--boxes", "FILE",
+             "also draw the part boxes (PREFIX_boxes.ply of --boxes) as dark edges",
+             [&](const std::string& v) { boxes_path = v; });
+  if (!parser.parse(argc, argv))
+    return kExitOk;
+  if (shape_path.empty() || labels_path.empty() || out_path.empty())
+    throw UsageError("SHAPE, LABELS and -o are required");
   if (width == 0) {
     width = view == "all" ? 1800 : 800;
     height = 600;
@@ -556,7 +534,7 @@ main(int argc, char** argv)
 
   Shape shape;
   segmat::TriangleMesh boxes;
-  try {
+  asInput([&] {
     shape = loadShape(shape_path, labels_path);
     if (!boxes_path.empty()) {
       // The boxes' face colours are PLY properties PCL's mesh reader does not take: not a fault.
@@ -565,18 +543,21 @@ main(int argc, char** argv)
       if (boxes.empty())
         throw segmat::Error(boxes_path, 0, "no box faces to draw");
     }
-  }
-  catch (const std::exception& e) {
-    std::cerr << "segmat_render: " << e.what() << "\n";
-    return 2;
-  }
-  try { // X only after the inputs are checked: bad input fails fast
+  });
+  // X only after the inputs are checked: bad input fails fast.
+  try {
     const PrivateXvfb xvfb;
     render(shape, view, width, height, part_ids, boxes_path.empty() ? nullptr : &boxes, out_path);
+  } catch (const std::exception& e) {
+    throw segmat::Error(out_path + ": " + e.what());
   }
-  catch (const std::exception& e) {
-    std::cerr << "segmat_render: " << out_path << ": " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+  return kExitOk;
+}
+
+} // namespace
+
+int
+main(int argc, char** argv)
+{
+  return segmat::cli::runMain("segmat_render", [&] { return run(argc, argv); });
 }
