@@ -106,6 +106,14 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
   const double inv_r = 1.0 / (2.0 * range_sigma * range_sigma);
   const double still = 1.0 - std::cos(still_degrees * M_PI / 180.0);
 
+  // The centroids stay put while the normals are filtered: area × spatial weight once.
+  std::vector<std::vector<double>> fixed(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    fixed[f].reserve(neighbours[f].size());
+    for (int j : neighbours[f])
+      fixed[f].push_back(g.areas[j] *
+                         std::exp(-(g.centroids[f] - g.centroids[j]).squaredNorm() * inv_s));
+  }
   std::vector<Eigen::Vector3d> normals = g.normals, next(nf);
   for (int it = 0; it < max_iterations; ++it) {
     double turned = 0.0;
@@ -116,12 +124,12 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
       if (normals[f].isZero())
         continue;
       Eigen::Vector3d sum = g.areas[f] * normals[f];
-      for (int j : neighbours[f]) {
+      for (std::size_t a = 0; a < neighbours[f].size(); ++a) {
+        const int j = neighbours[f][a];
         if (normals[j].isZero())
           continue;
-        const double ds = (g.centroids[f] - g.centroids[j]).squaredNorm();
         const double dr = (normals[f] - normals[j]).squaredNorm();
-        sum += g.areas[j] * std::exp(-ds * inv_s - dr * inv_r) * normals[j];
+        sum += fixed[f][a] * std::exp(float(-dr * inv_r)) * normals[j];
       }
       if (sum.norm() > 0.0)
         next[f] = sum.normalized();

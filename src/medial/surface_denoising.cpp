@@ -30,14 +30,18 @@ sidedHeightFit(const std::vector<Eigen::Vector3f>& points, int self, const pcl::
                         e2 = pca.eigenvectors().col(2);
   const Eigen::Vector3d origin = points[self].cast<double>();
   const std::size_t m = nn.size();
-  std::vector<Eigen::Matrix<double, 6, 1>> basis(m);
-  std::vector<double> height(m), spatial(m);
+  // Called once per sample and pass: reuse the thread's buffers instead of allocating.
+  thread_local std::vector<Eigen::Matrix<double, 6, 1>> basis;
+  thread_local std::vector<double> height, spatial;
+  basis.resize(m);
+  height.resize(m);
+  spatial.resize(m);
   for (std::size_t a = 0; a < m; ++a) {
     const Eigen::Vector3d d = points[nn[a]].cast<double>() - origin;
     const double u = d.dot(e1) / support, v = d.dot(e2) / support; // unit-free: well posed
     basis[a] << 1.0, u, v, u * u, u * v, v * v;
     height[a] = d.dot(n);
-    spatial[a] = std::exp(-double(d2[a]) / (support * support));
+    spatial[a] = std::exp(float(-double(d2[a]) / (support * support)));
   }
   // From the plane through the point, with a wide residual band that narrows: a narrow band at
   // once would leave too few neighbours on a curved surface to fix six coefficients. A small
@@ -51,7 +55,8 @@ sidedHeightFit(const std::vector<Eigen::Vector3f>& points, int self, const pcl::
     double total = 0.0;
     for (std::size_t a = 0; a < m; ++a) {
       const double r = height[a] - basis[a].dot(coef);
-      const double w = spatial[a] * std::exp(-r * r * inv_band2);
+      const double w =
+          spatial[a] * std::exp(float(-r * r * inv_band2)); // weights: float precision is plenty
       normal += w * basis[a] * basis[a].transpose();
       rhs += w * height[a] * basis[a];
       total += w;
@@ -319,19 +324,35 @@ public:
   }
 
 private:
+  /// The consumers read only the sample itself (first), its nearest neighbour (second) and the
+  /// farthest (last), so those three are put in place and the rest stay in ring order.
   void
   sortByDistance(int i, pcl::Indices& nn, std::vector<float>& d2) const
   {
     const std::vector<Eigen::Vector3f>& p = *positions_;
-    std::vector<std::pair<float, int>> order(nn.size());
-    for (std::size_t a = 0; a < nn.size(); ++a)
-      order[a] = {nn[a] == i ? -1.0f : (p[nn[a]] - p[i]).squaredNorm(), nn[a]};
-    std::sort(order.begin(), order.end());
     d2.resize(nn.size());
-    for (std::size_t a = 0; a < nn.size(); ++a) {
-      nn[a] = order[a].second;
-      d2[a] = std::max(0.0f, order[a].first);
-    }
+    for (std::size_t a = 0; a < nn.size(); ++a)
+      d2[a] = nn[a] == i ? -1.0f : (p[nn[a]] - p[i]).squaredNorm();
+    auto place = [&](std::size_t to, std::size_t from) {
+      std::swap(nn[to], nn[from]);
+      std::swap(d2[to], d2[from]);
+    };
+    // Ties go to the earlier entry, so the arrangement does not depend on anything but the rings.
+    auto pick = [&](std::size_t begin, std::size_t end, bool nearest) {
+      std::size_t best = begin;
+      for (std::size_t a = begin + 1; a < end; ++a)
+        if (nearest ? d2[a] < d2[best] : d2[a] > d2[best])
+          best = a;
+      return best;
+    };
+    const std::size_t n = nn.size();
+    if (n > 0)
+      place(0, pick(0, n, true)); // the sample itself (-1)
+    if (n > 1)
+      place(1, pick(1, n, true));
+    if (n > 2)
+      place(n - 1, pick(2, n, false));
+    d2[0] = 0.0f;
   }
 
   std::vector<std::vector<int>> close_; // two rings

@@ -52,7 +52,8 @@ struct SurfaceNoise
 
 /** \brief Where a surface sample's neighbours come from: the nearest samples in space for a
  * cloud, the rings around a vertex for a mesh (which never mix the two sides of a thin wall).
- * Each list starts with the sample itself, then goes by increasing distance.
+ * Each list starts with the sample itself, then its nearest neighbour, and ends with the
+ * farthest; the squared distances come in the same order.
  */
 class SampleNeighbourhoods
 {
