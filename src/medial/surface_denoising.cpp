@@ -263,6 +263,7 @@ class RingNeighbourhoods : public SampleNeighbourhoods
 {
 public:
   RingNeighbourhoods(std::size_t vertex_count, const std::vector<Eigen::Vector3i>& faces, int k)
+  : k_(k)
   {
     std::vector<std::vector<int>> ring(vertex_count);
     for (const Eigen::Vector3i& f : faces)
@@ -278,29 +279,19 @@ public:
       std::sort(r.begin(), r.end());
       r.erase(std::unique(r.begin(), r.end()), r.end());
     }
-    close_.resize(vertex_count);
-    rings_.resize(vertex_count);
-    std::vector<int> mark(vertex_count, -1);
-    for (int v = 0; v < int(vertex_count); ++v) {
-      std::vector<int>& around = rings_[v];
-      around.push_back(v);
-      mark[v] = v;
-      std::size_t begin = 0;
-      for (int depth = 0; depth < 3 && (depth < 2 || int(around.size()) < k); ++depth) {
-        const std::size_t end = around.size();
-        for (std::size_t a = begin; a < end; ++a)
-          for (int w : ring[around[a]])
-            if (mark[w] != v) {
-              mark[w] = v;
-              around.push_back(w);
-            }
-        begin = end;
-        if (depth == 1)
-          close_[v] = around;
-      }
-      if (close_[v].empty())
-        close_[v] = around;
-    }
+    ring_ = std::move(ring);
+  }
+
+  /// Keeps every vertex's lists, for the smoothing passes that read each of them several times;
+  /// without it, each call gathers them anew (a clean mesh's estimate reads a few thousand).
+  void
+  precompute()
+  {
+    const std::size_t n = ring_.size();
+    close_.resize(n);
+    rings_.resize(n);
+    for (std::size_t v = 0; v < n; ++v)
+      gather(int(v), close_[v], rings_[v]);
   }
 
   void
@@ -312,14 +303,24 @@ public:
   void
   close(int i, pcl::Indices& nn, std::vector<float>& d2) const override
   {
-    nn.assign(close_[i].begin(), close_[i].end());
+    if (close_.empty()) {
+      thread_local std::vector<int> near, around;
+      gather(i, near, around);
+      nn.assign(near.begin(), near.end());
+    } else
+      nn.assign(close_[i].begin(), close_[i].end());
     sortByDistance(i, nn, d2);
   }
 
   void
   wide(int i, pcl::Indices& nn, std::vector<float>& d2) const override
   {
-    nn.assign(rings_[i].begin(), rings_[i].end());
+    if (rings_.empty()) {
+      thread_local std::vector<int> near, around;
+      gather(i, near, around);
+      nn.assign(around.begin(), around.end());
+    } else
+      nn.assign(rings_[i].begin(), rings_[i].end());
     sortByDistance(i, nn, d2);
   }
 
@@ -355,7 +356,41 @@ private:
     d2[0] = 0.0f;
   }
 
-  std::vector<std::vector<int>> close_; // two rings
+  /// Breadth-first from \a v: \a close gets two rings, \a around the rings until they hold k_
+  /// vertices (at most three), each in ring order.
+  void
+  gather(int v, std::vector<int>& close, std::vector<int>& around) const
+  {
+    thread_local std::vector<int> mark;
+    thread_local int stamp = 0;
+    if (mark.size() != ring_.size()) {
+      mark.assign(ring_.size(), 0);
+      stamp = 0;
+    }
+    ++stamp;
+    close.clear();
+    around.assign(1, v);
+    mark[v] = stamp;
+    std::size_t begin = 0;
+    for (int depth = 0; depth < 3 && (depth < 2 || int(around.size()) < k_); ++depth) {
+      const std::size_t end = around.size();
+      for (std::size_t a = begin; a < end; ++a)
+        for (int w : ring_[around[a]])
+          if (mark[w] != stamp) {
+            mark[w] = stamp;
+            around.push_back(w);
+          }
+      begin = end;
+      if (depth == 1)
+        close = around;
+    }
+    if (close.empty())
+      close = around;
+  }
+
+  int k_;
+  std::vector<std::vector<int>> ring_;  // one ring per vertex
+  std::vector<std::vector<int>> close_; // two rings (when precomputed)
   std::vector<std::vector<int>> rings_;
   const std::vector<Eigen::Vector3f>* positions_ = nullptr;
 };
@@ -449,6 +484,7 @@ denoiseMeshSurface(std::vector<Eigen::Vector3d>& vertices,
     return result;
   }
   const double turn = result.face_turn_degrees;
+  neighbourhoods.precompute();
   result = denoiseSurface(positions, neighbourhoods, max_passes, threads, 0.0);
   result.face_turn_degrees = turn;
   for (std::size_t i = 0; i < vertices.size(); ++i)
