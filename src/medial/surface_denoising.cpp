@@ -303,28 +303,31 @@ public:
   void
   close(int i, pcl::Indices& nn, std::vector<float>& d2) const override
   {
-    if (close_.empty()) {
-      thread_local std::vector<int> near, around;
-      gather(i, near, around);
-      nn.assign(near.begin(), near.end());
-    } else
-      nn.assign(close_[i].begin(), close_[i].end());
-    sortByDistance(i, nn, d2);
+    list(i, false, nn, d2);
   }
 
   void
   wide(int i, pcl::Indices& nn, std::vector<float>& d2) const override
   {
-    if (rings_.empty()) {
-      thread_local std::vector<int> near, around;
-      gather(i, near, around);
-      nn.assign(around.begin(), around.end());
-    } else
-      nn.assign(rings_[i].begin(), rings_[i].end());
-    sortByDistance(i, nn, d2);
+    list(i, true, nn, d2);
   }
 
 private:
+  void
+  list(int i, bool wide, pcl::Indices& nn, std::vector<float>& d2) const
+  {
+    if (rings_.empty()) {
+      thread_local std::vector<int> near, around;
+      gather(i, near, around);
+      const std::vector<int>& chosen = wide ? around : near;
+      nn.assign(chosen.begin(), chosen.end());
+    } else {
+      const std::vector<int>& chosen = wide ? rings_[i] : close_[i];
+      nn.assign(chosen.begin(), chosen.end());
+    }
+    sortByDistance(i, nn, d2);
+  }
+
   /// The consumers read only the sample itself (first), its nearest neighbour (second) and the
   /// farthest (last), so those three are put in place and the rest stay in ring order.
   void
