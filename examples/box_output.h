@@ -12,38 +12,49 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include <segmat/io/atomic_file.h>
+
 #include <string>
 #include <vector>
 
 namespace segmat {
 namespace cli {
 
-/** Writes the boxes of the estimation's parts; returns how many. */
+/** The files --boxes writes after PREFIX (declare them with the run's other outputs). */
+inline std::vector<std::string>
+boxSuffixes()
+{
+  return {"_boxes.json", "_boxes.ply"};
+}
+
+/** Writes the boxes of the estimation's parts into \a outputs' temporaries (committed with the
+ * run's other outputs); returns how many. */
 inline std::size_t
-writePartBoxes(const std::string& prefix, const PartBoxEstimation& estimation)
+writePartBoxes(const io::OutputSet& outputs, const std::string& prefix,
+               const PartBoxEstimation& estimation)
 {
   std::vector<PartBox> boxes;
   estimation.compute(boxes);
-  io::saveBoxesJson(prefix + "_boxes.json", boxes);
-  io::saveBoxesPly(prefix + "_boxes.ply", boxes);
+  io::saveBoxesJson(outputs.temporary(prefix + "_boxes.json"), boxes);
+  io::saveBoxesPly(outputs.temporary(prefix + "_boxes.ply"), boxes);
   return boxes.size();
 }
 
 /** Boxes of a segmented mesh (one label per face). */
 inline std::size_t
-writePartBoxes(const std::string& prefix, const TriangleMesh::ConstPtr& mesh,
-               const std::vector<int>& face_labels)
+writePartBoxes(const io::OutputSet& outputs, const std::string& prefix,
+               const TriangleMesh::ConstPtr& mesh, const std::vector<int>& face_labels)
 {
   PartBoxEstimation estimation;
   estimation.setInputMesh(mesh, face_labels);
-  return writePartBoxes(prefix, estimation);
+  return writePartBoxes(outputs, prefix, estimation);
 }
 
 /** Boxes of a labelled cloud (the `label` field; \a labels, when as long as the cloud, overrides
  * it so that unlabelled points (−1) get no box). */
 inline std::size_t
-writePartBoxes(const std::string& prefix, const pcl::PointCloud<pcl::PointXYZL>& cloud,
-               const std::vector<int>& labels)
+writePartBoxes(const io::OutputSet& outputs, const std::string& prefix,
+               const pcl::PointCloud<pcl::PointXYZL>& cloud, const std::vector<int>& labels)
 {
   std::vector<Eigen::Vector3d> points(cloud.size());
   std::vector<int> point_labels(cloud.size());
@@ -53,7 +64,7 @@ writePartBoxes(const std::string& prefix, const pcl::PointCloud<pcl::PointXYZL>&
   }
   PartBoxEstimation estimation;
   estimation.setInputPoints(points, point_labels);
-  return writePartBoxes(prefix, estimation);
+  return writePartBoxes(outputs, prefix, estimation);
 }
 
 } // namespace cli

@@ -23,16 +23,29 @@ namespace cli {
  * {"levels": [{"level": K, "name": .., "growing_threshold": δ, "min_region": η,
  * "file": "PREFIX_levelK.seg", "parts": N, "parents": [parent of part 0, ...]}, ...]}
  * (file names relative to the JSON's folder; parents −1 on level 0). Returns the level count. */
+inline std::vector<std::string>
+hierarchySuffixes()
+{
+  std::vector<std::string> suffixes;
+  for (std::size_t k = 0; k < detailLevels().size(); ++k)
+    suffixes.push_back("_level" + std::to_string(k) + ".seg");
+  suffixes.push_back("_hierarchy.json");
+  return suffixes;
+}
+
+/** Writes into \a outputs' temporaries (declared with hierarchySuffixes()). */
 inline std::size_t
-writeHierarchy(const std::string& prefix, MeshSegmentation& segmentation)
+writeHierarchy(const io::OutputSet& outputs, const std::string& prefix,
+               MeshSegmentation& segmentation)
 {
   std::vector<HierarchyLevel> hierarchy;
   if (!segmentHierarchy(segmentation, detailLevels(), hierarchy))
     throw Error("the hierarchy's segmentation failed");
   const std::string base = std::filesystem::path(prefix).filename().string();
   for (std::size_t k = 0; k < hierarchy.size(); ++k)
-    io::saveSeg(prefix + "_level" + std::to_string(k) + ".seg", hierarchy[k].labels);
-  io::writeFileAtomically(prefix + "_hierarchy.json", [&](std::ostream& out) {
+    io::saveSeg(outputs.temporary(prefix + "_level" + std::to_string(k) + ".seg"),
+                hierarchy[k].labels);
+  io::writeFileAtomically(outputs.temporary(prefix + "_hierarchy.json"), [&](std::ostream& out) {
     out.precision(15); // the levels' δ and η print as written (0.03, not 0.029999999999999999)
     out << "{\"levels\": [";
     for (std::size_t k = 0; k < hierarchy.size(); ++k) {

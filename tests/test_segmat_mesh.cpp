@@ -145,3 +145,25 @@ TEST(SegmatMesh, BadInputNamesTheFileAndFails)
   EXPECT_NE(run.err.find("--max-bend"), std::string::npos) << run.err;
   EXPECT_FALSE(test::fileExists(prefix + ".seg"));
 }
+
+// --boxes and --hierarchy are outputs of the run like the labels: they appear with them, and a
+// run whose extra output cannot be written leaves no output at all, before any work is done.
+TEST(SegmatMesh, BoxesAndHierarchyAppearTogetherWithTheLabels)
+{
+  const std::string prefix = test::scratchDir() + "teddy_all";
+  const test::ProgramRun run =
+    test::runProgram("segmat_mesh", test::teddyMeshArgs(prefix) + " --boxes --hierarchy");
+  ASSERT_EQ(run.status, 0) << run.err;
+  for (const char* suffix : {".seg", ".ply", "_boxes.json", "_boxes.ply", "_level0.seg",
+                             "_level1.seg", "_level2.seg", "_hierarchy.json"})
+    EXPECT_TRUE(test::fileExists(prefix + suffix)) << suffix;
+
+  const std::string other = test::scratchDir() + "teddy_none";
+  const test::ProgramRun refused = test::runProgram(
+    "segmat_mesh", test::teddyMeshArgs(other) + " --boxes --png " + test::scratchDir() +
+                       "no_such_folder/teddy.png");
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("no_such_folder"), std::string::npos) << refused.err;
+  for (const char* suffix : {".seg", ".ply", "_boxes.json", "_boxes.ply"})
+    EXPECT_FALSE(test::fileExists(other + suffix)) << suffix;
+}
