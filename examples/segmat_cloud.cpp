@@ -51,11 +51,10 @@ run(int argc, char** argv)
   std::string png;
   CloudSegmentation<pcl::PointNormal> segmentation;
 
-  OptionParser parser(
-      "segmat_cloud", "CLOUD -o PREFIX [options]",
-      "Segments a point cloud into parts with SEG-MAT's cloud path (medial mesh of\n"
-      "the points, region growing on its spheres, graph cut back to every point).",
-      "segmat_cloud cloud.pcd -o parts   # writes parts.pcd, parts.ply, parts.labels");
+  OptionParser parser("segmat_cloud", "CLOUD -o PREFIX [options]",
+                      "Segments a point cloud into parts with SEG-MAT's cloud path (medial mesh of\n"
+                      "the points, region growing on its spheres, graph cut back to every point).",
+                      "segmat_cloud cloud.pcd -o parts   # writes parts.pcd, parts.ply, parts.labels");
   parser.positional("CLOUD", "point cloud (.pcd, .ply, .xyz/.txt), with or without normals",
                     cloud_path);
   parser.flag(kInput, "--estimate-normals", "ignore the file's normals and estimate them",
@@ -71,27 +70,21 @@ run(int argc, char** argv)
              [&](const std::string& v) {
                segmentation.setGrowingThreshold(parseNumberIn(v, 1e-9, 1e9, "a threshold > 0"));
              });
-  parser.add(kParameters, "-n", "ETA",
-             "minimal region, fraction of the medial points\n"
-             "(default 0.002)",
-             [&](const std::string& v) {
-               segmentation.setMinRegionFraction(
-                   parseNumberIn(v, 0.0, 1.0, "a fraction in [0, 1]"));
+  parser.add(kParameters, "-n", "ETA", "minimal region, fraction of the medial points\n"
+             "(default 0.002)", [&](const std::string& v) {
+               segmentation.setMinRegionFraction(parseNumberIn(v, 0.0, 1.0, "a fraction in [0, 1]"));
              });
   parser.add(kParameters, "-w", "SIZE",
              "working size: points kept for the medial step (default 20000;\n"
-             "ceiling: see docs/cli.md)",
-             [&](const std::string& v) {
+             "ceiling: see docs/cli.md)", [&](const std::string& v) {
                segmentation.setWorkingSize(static_cast<std::size_t>(parseInteger(v, 1)));
              });
   parser.add(kParameters, "-k", "K", "neighbours of the k-NN graphs (default 10)",
              [&](const std::string& v) { segmentation.setKSearch(parseInteger(v, 1, 1000)); });
   parser.flag(kParameters, "--no-visibility", "merge parts without the visibility test",
               [&] { segmentation.setVisibilityFlag(false); });
-  parser.add(kParameters, "--max-bend", "DEG",
-             "largest turn of a bulky tube inside one part\n"
-             "(default 60; 90 = off, as in SEG-MAT)",
-             [&](const std::string& v) {
+  parser.add(kParameters, "--max-bend", "DEG", "largest turn of a bulky tube inside one part\n"
+             "(default 60; 90 = off, as in SEG-MAT)", [&](const std::string& v) {
                segmentation.setMaxBendAngle(parseNumberIn(v, 1e-9, 90.0, "an angle in (0, 90]"));
              });
   parser.flag(kParameters, "--meso-skeleton",
@@ -101,15 +94,13 @@ run(int argc, char** argv)
                 segmentation.setMedialAxis(CloudMedialAxis::MesoSkeleton);
                 meso_skeleton = true;
               });
-  parser.add(
-      kNoise, "--runs", "N",
-      "segmentations of a noisy cloud to keep the consensus of\n"
-      "(default 9; 1: one run)",
-      [&](const std::string& v) { segmentation.setConsensusRuns(parseInteger(v, 1, 1000)); });
+  parser.add(kNoise, "--runs", "N", "segmentations of a noisy cloud to keep the consensus of\n"
+             "(default 9; 1: one run)", [&](const std::string& v) {
+               segmentation.setConsensusRuns(parseInteger(v, 1, 1000));
+             });
   parser.flag(kNoise, "--runs-always", "consensus runs for every cloud, not only noisy ones",
               [&] { segmentation.setConsensusForEveryCloudFlag(true); });
-  parser.add(kNoise, "--runs-merge", "F",
-             "merge each run's adjacent parts that the runs join\n"
+  parser.add(kNoise, "--runs-merge", "F", "merge each run's adjacent parts that the runs join\n"
              "with a mean co-association above F (default 0.5; above 1: no merging)",
              [&](const std::string& v) {
                segmentation.setConsensusMergeThreshold(parseNumberIn(v, 0.0, 1e9, "a number >= 0"));
@@ -118,13 +109,10 @@ run(int argc, char** argv)
               "the kept run's merge may join a cut a third of the runs make\n"
               "alike (by default such cuts are kept)",
               [&] { segmentation.setConsensusKeepReproducedCutsFlag(false); });
-  parser.add(kNoise, "--boundary-merge", "K",
-             "parts of a noisy cloud that share at least\n"
+  parser.add(kNoise, "--boundary-merge", "K", "parts of a noisy cloud that share at least\n"
              "K*sqrt(n) spheres merge without the visibility test (default 0.5;\n"
-             "0: off, as in SEG-MAT)",
-             [&](const std::string& v) {
-               segmentation.setNoisyBoundaryMergeFactor(
-                   parseNumberIn(v, 0.0, 1e9, "a number >= 0"));
+             "0: off, as in SEG-MAT)", [&](const std::string& v) {
+               segmentation.setNoisyBoundaryMergeFactor(parseNumberIn(v, 0.0, 1e9, "a number >= 0"));
              });
   parser.flag(kNoise, "--noisy-centres-outside",
               "let Q-MAT move a noisy cloud's merged sphere centres out of the\n"
@@ -132,8 +120,7 @@ run(int argc, char** argv)
               [&] { segmentation.setNoisyCentresInsideFlag(false); });
   parser.flag(kOutput, "--boxes",
               "also write PREFIX_boxes.json and PREFIX_boxes.ply: one tight oriented\n"
-              "box per part (docs/abstraction.md)",
-              boxes);
+              "box per part (docs/abstraction.md)", boxes);
   parser.add(kOutput, "--png", "FILE", "also draw the parts into a PNG (segmat_render, with VTK)",
              [&](const std::string& v) { png = v; });
   parser.add(kParameters, "--level", "L",

@@ -44,16 +44,13 @@ run(int argc, char** argv)
                       "transform, region growing, graph-cut boundaries).",
                       "segmat_mesh data/teddy/teddy.off -o teddy   # writes teddy.seg, teddy.ply");
   parser.positional("MESH", "closed triangle mesh (.off, .ply, .obj, .stl)", mesh_path);
-  parser.add(kInput, "-b", "BASE.ma",
-             "base medial mesh (Q-MAT .ma, e.g. 2000 spheres); with -s.\n"
-             "Default: computed from the mesh",
-             [&](const std::string& v) { base_path = v; });
+  parser.add(kInput, "-b", "BASE.ma", "base medial mesh (Q-MAT .ma, e.g. 2000 spheres); with -s.\n"
+             "Default: computed from the mesh", [&](const std::string& v) { base_path = v; });
   parser.add(kInput, "-s", "STRUCT.ma", "structured medial mesh (e.g. 15-30 spheres); with -b",
              [&](const std::string& v) { structured_path = v; });
   parser.add(kOutput, "-o", "PREFIX",
              "writes PREFIX.seg (one label per face, PSB format) and PREFIX.ply\n"
-             "(faces coloured by part)",
-             [&](const std::string& v) { prefix = v; });
+             "(faces coloured by part)", [&](const std::string& v) { prefix = v; });
   parser.flag(kOutput, "--save-mat",
               "also write the computed medial meshes to PREFIX_base.ma and\nPREFIX_struct.ma",
               save_mat);
@@ -61,23 +58,16 @@ run(int argc, char** argv)
              [&](const std::string& v) {
                segmentation.setGrowingThreshold(parseNumberIn(v, 1e-9, 1e9, "a threshold > 0"));
              });
-  parser.add(kParameters, "-n", "ETA",
-             "minimal region, fraction of the base MAT's spheres\n"
-             "(default 0.002)",
-             [&](const std::string& v) {
-               segmentation.setMinRegionFraction(
-                   parseNumberIn(v, 0.0, 1.0, "a fraction in [0, 1]"));
+  parser.add(kParameters, "-n", "ETA", "minimal region, fraction of the base MAT's spheres\n"
+             "(default 0.002)", [&](const std::string& v) {
+               segmentation.setMinRegionFraction(parseNumberIn(v, 0.0, 1.0, "a fraction in [0, 1]"));
              });
-  parser.add(kParameters, "--seed", "S",
-             "seed of the merging's visibility sampling\n"
-             "(default 386727)",
-             [&](const std::string& v) {
+  parser.add(kParameters, "--seed", "S", "seed of the merging's visibility sampling\n"
+             "(default 386727)", [&](const std::string& v) {
                segmentation.setRandomSeed(static_cast<unsigned>(parseInteger(v, 0, 4294967295L)));
              });
-  parser.add(kParameters, "--max-bend", "DEG",
-             "largest turn of a bulky tube inside one part\n"
-             "(default 60; 90 = off, as in SEG-MAT)",
-             [&](const std::string& v) {
+  parser.add(kParameters, "--max-bend", "DEG", "largest turn of a bulky tube inside one part\n"
+             "(default 60; 90 = off, as in SEG-MAT)", [&](const std::string& v) {
                segmentation.setMaxBendAngle(parseNumberIn(v, 1e-9, 90.0, "an angle in (0, 90]"));
              });
   parser.flag(kParameters, "--reference-crease",
@@ -86,8 +76,7 @@ run(int argc, char** argv)
               [&] { segmentation.setCreaseModel(CreaseModel::Reference); });
   parser.flag(kOutput, "--boxes",
               "also write PREFIX_boxes.json and PREFIX_boxes.ply: one tight oriented\n"
-              "box per part (docs/abstraction.md)",
-              boxes);
+              "box per part (docs/abstraction.md)", boxes);
   parser.flag(kOutput, "--hierarchy",
               "also segment at every level, coarse to fine, each part inside one part\n"
               "of the level above; writes PREFIX_level0.seg.. and PREFIX_hierarchy.json",
@@ -144,15 +133,15 @@ run(int argc, char** argv)
       if (base->empty())
         throw Error(base_path, 0, "the base medial mesh has no spheres");
       std::string reason;
-      for (const auto& [path, mat] :
-           {std::make_pair(base_path, base), std::make_pair(structured_path, structured)})
+      for (const auto& [path, mat] : {std::make_pair(base_path, base),
+                                      std::make_pair(structured_path, structured)})
         if (!MedialMeshFit().check(*mat, *mesh, reason))
           throw Error(path, 0, "does not fit the mesh " + mesh_path + ": " + reason);
     }
   });
   warnIfNotClosed(parser.program(), mesh_path, *mesh);
-  const double load_seconds =
-      progress.stage(base ? "segmenting" : "computing the medial meshes and segmenting");
+  const double load_seconds = progress.stage(base ? "segmenting" :
+                                             "computing the medial meshes and segmenting");
 
   segmentation.setInputMesh(mesh);
   if (base) { // otherwise segment() computes them
@@ -192,7 +181,8 @@ run(int argc, char** argv)
                 segmentation.getStructuredMat()->numVertices(), segmentation.getEstimatedNoise(),
                 segmentation.getDenoisingPasses(), jsonSizes(parts).c_str(),
                 jsonSeconds(seconds).c_str());
-  } else {
+  }
+  else {
     printPartsText("face", parts, seconds);
     std::printf("\n");
     printWrote(outputs);
