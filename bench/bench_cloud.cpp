@@ -6,10 +6,11 @@
  * teddy), single thread unless --threads is given. Prints the CPU and wall seconds of
  * segment() (sampling excluded) and the wall seconds of every stage; on a shared machine the CPU
  * time of a single-thread run is the figure to quote. Peak memory: run it under /usr/bin/time -v. Run from the
- * repository root (the default mesh is data/teddy/teddy.off).
+ * repository root (the default mesh is data/teddy/teddy.off). --noise adds Gaussian noise of that
+ * σ (% of the bounding-box diagonal) to the points, as bench_noise does.
  *
  * Usage: bench_cloud [MESH.off] [--points N] [--estimate-normals] [--threads N] [--repeat R]
- *                    [--working N] [--samples N] [--keep-inside] [--meso-skeleton]
+ *                    [--working N] [--samples N] [--keep-inside] [--noise PERCENT] [--meso-skeleton]
  *                    [--balls N] [--contraction N]   (meso-skeleton parameters)
  */
 // The test sampler is compiled in (bench programs link only the library).
@@ -39,6 +40,7 @@ main(int argc, char** argv)
   bool meso = false;
   long samples = -1;
   bool keep_inside = false;
+  double noise = 0.0;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--points" && i + 1 < argc)
@@ -53,6 +55,8 @@ main(int argc, char** argv)
       params.working_size = std::stoul(argv[++i]);
     else if (arg == "--samples" && i + 1 < argc)
       samples = std::stol(argv[++i]);
+    else if (arg == "--noise" && i + 1 < argc)
+      noise = std::stod(argv[++i]);
     else if (arg == "--keep-inside")
       keep_inside = true;
     else if (arg == "--meso-skeleton")
@@ -66,7 +70,7 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_cloud [MESH.off] [--points N] [--estimate-normals] "
                    "[--threads N] [--repeat R] [--working N] [--samples N] [--keep-inside] "
-                   "[--meso-skeleton] [--balls N] [--contraction N]\n";
+                   "[--noise PERCENT] [--meso-skeleton] [--balls N] [--contraction N]\n";
       return 2;
     }
   }
@@ -79,7 +83,10 @@ main(int argc, char** argv)
     std::cerr << "bench_cloud: " << e.what() << "\n";
     return 1;
   }
-  const auto cloud = segmat::test::sampleMesh(mesh, points, 1).toPointNormal();
+  segmat::test::SampledCloud sampled = segmat::test::sampleMesh(mesh, points, 1);
+  if (noise > 0.0) // bench_noise's noise model, in % of the diagonal
+    segmat::test::addGaussianNoise(sampled, noise / 100.0, 2);
+  const auto cloud = sampled.toPointNormal();
   for (int r = 0; r < repeat; ++r) {
     segmat::CloudSegmentation<pcl::PointNormal> seg;
     seg.setInputCloud(cloud);
