@@ -175,9 +175,11 @@ public:
    *         volume), or a stage fails.
    *
    * The mesh is segmented in a normalised frame: centred on its bounding box, scaled by a power
-   * of two to a diagonal near 1 (docs/robustness.md). Translating or scaling the input
-   * therefore changes nothing beyond the input's own rounding; a power-of-two scale changes no
-   * label. Labels, parts and the medial meshes
+   * of two to a diagonal near 1 (docs/robustness.md), and turned onto its principal axes with
+   * setPrincipalAxesFrame(true). Translating or scaling the input therefore changes nothing
+   * beyond the input's own rounding; a power-of-two scale changes no label; in the
+   * principal-axes frame a rotation changes none either (shapes without unique principal axes
+   * aside). Labels, parts and the medial meshes
    * returned are in the input's frame and order; getGraph() is in the normalised frame.
    */
   bool
