@@ -5,7 +5,8 @@
  * bench_invariance: Rand distance between the parts of each mesh and of its transformed copies
  * (bench/shape_variants.h: translated, scaled, rotated, re-ordered, other file formats), per
  * transformation: mean, largest, and the models whose part count changed.
- *   bench_invariance DIR_OR_MESH... [--threads T]
+ *   bench_invariance DIR_OR_MESH... [--threads T] [--principal-axes]
+ * --principal-axes segments in the principal-axes frame (MeshSegmentation::setPrincipalAxesFrame).
  * A folder contributes its off/ *.off files (a PSB-style folder) or its own files.
  */
 #include <segmat/segmentation/mesh_segmentation.h>
@@ -29,9 +30,12 @@ main(int argc, char** argv)
 {
   std::vector<std::string> files;
   unsigned threads = 1;
+  bool principal_axes = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--threads")
+    if (arg == "--principal-axes")
+      principal_axes = true;
+    else if (arg == "--threads")
       threads = static_cast<unsigned>(std::max(0, bench::intArgument(argc, argv, i)));
     else if (std::filesystem::is_directory(arg + "/off"))
       bench::appendPaths(arg + "/off", files);
@@ -41,6 +45,7 @@ main(int argc, char** argv)
   const auto segment = [&](const TriangleMesh& mesh, std::vector<int>& labels) {
     MeshSegmentation seg;
     seg.setNumberOfThreads(threads);
+    seg.setPrincipalAxesFrame(principal_axes);
     seg.setInputMesh(std::make_shared<const TriangleMesh>(mesh));
     return seg.segment(labels);
   };

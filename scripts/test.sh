@@ -14,7 +14,7 @@ cd "$root/build"
 ctest --output-on-failure -j "${SEGMAT_JOBS:-$(nproc)}"
 # Fuzz every file reader for a short fixed time (docs/robustness.md); SEGMAT_FUZZ_SECONDS=0 skips.
 # A finding is reported (with its input under build-fuzz/findings) but does not fail the run:
-# a short run may or may not hit a known open finding (tests/fuzz/open), and the fixed ones are
+# a short run may or may not hit a new finding by chance, and the fixed ones are
 # replayed by test_fuzz_regressions above, which does fail the run.
 if [ "${SEGMAT_FUZZ_SECONDS:-20}" != 0 ]; then
   SEGMAT_FUZZ_SECONDS="${SEGMAT_FUZZ_SECONDS:-20}" bash "$root/scripts/fuzz.sh" ||

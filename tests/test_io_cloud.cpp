@@ -206,6 +206,28 @@ TEST(LoadCloudErrors, PcdTruncatedAndNoXyz)
                          "2 points need at least 56 bytes of data, the file has 46"));
 }
 
+TEST(LoadCloudErrors, PcdDataChecked)
+{
+  const std::string pcd = kAsciiPcd;
+  const std::string header = pcd.substr(0, pcd.find("DATA ascii\n") + 11);
+  // PCL's parser would take these lines for header lines (and then write past its buffers).
+  EXPECT_TRUE(cloudFails("fields.pcd", header + "\nFIELDS\n0 0 0\n1 0 0\n0 1 0\n", 13,
+                         "the data starts with the header keyword 'FIELDS'"));
+  EXPECT_TRUE(cloudFails("points.pcd", header + "POINTS 1\n0 0 0\n1 0 0\n0 1 0\n", 12,
+                         "header keyword 'POINTS'"));
+  // ASCII points hold as many numbers as the fields need.
+  EXPECT_TRUE(cloudFails("word.pcd", header + "0 0 0\n1 x 0\n0 1 0\n", 13,
+                         "value 'x' is not a number"));
+  EXPECT_TRUE(cloudFails("two.pcd", header + "0.5 0.5 0\n1 0 0\n0 1\n", 14,
+                         "point 3 has 2 values, the fields need 3"));
+  EXPECT_TRUE(cloudFails("short.pcd", header + "0.000000 0 0\n\n1.000000 0 0\n", 14,
+                         "the data holds 2 points, the header announces 3"));
+  // Empty lines, CRLF and NaN are fine.
+  const io::LoadedCloud read =
+      io::loadCloud(writeScratchFile("crlf.pcd", header + "0 0 0\r\n\n1 0 nan\r\n0 1 0.5\r\n"));
+  EXPECT_EQ(read.cloud->size(), 3u);
+}
+
 TEST(LoadCloudErrors, XyzCatalogue)
 {
   EXPECT_TRUE(cloudFails("four.xyz", "0 0 0\n1 2 3 4\n", 2, "4 values"));

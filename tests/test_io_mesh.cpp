@@ -313,6 +313,23 @@ TEST(LoadMeshErrors, StlTruncatedAndJunk)
   EXPECT_TRUE(meshFails("empty.stl", "", 0, "empty file"));
 }
 
+TEST(LoadMeshErrors, StlReadAsBinaryByItsBytes)
+{
+  // VTK reads a file as binary once 5 % of its first 256 bytes are not text, even after
+  // "solid", and then trusts bytes 80-83 as the triangle count.
+  const std::string facet = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                            "vertex 0 1 0\nendloop\nendfacet\n";
+  const auto solid = [&](const std::string& name) {
+    return "solid " + name + "\n" + facet + facet + facet + "endsolid\n";
+  };
+  // 12 of the first 256 bytes (4.7 %) are not text: ASCII, read.
+  const TriangleMesh named = io::loadMesh(writeScratchFile("utf8.stl", solid(std::string(12, '\xc3'))));
+  EXPECT_EQ(named.numFaces(), 3u);
+  // 13 (5.1 %), here vertical tabs: binary, and its count does not fit the file.
+  EXPECT_TRUE(meshFails("tabs.stl", solid(std::string(13, '\v')), 0,
+                        "starts with 'solid' but 13 of its first 256 bytes are not text"));
+}
+
 TEST(LoadMeshErrors, DamagedPlyAndObjNeverCrash)
 {
   const auto load = [](const std::string& path) { io::loadMesh(path); };

@@ -76,6 +76,13 @@ public:
     return file_size_ > header_bytes_ ? file_size_ - header_bytes_ : 0;
   }
 
+  // Offset of the first byte after the header.
+  std::uint64_t
+  headerBytes() const
+  {
+    return header_bytes_;
+  }
+
   // Reads \a size bytes right after the header (false when the file is shorter).
   bool
   peekData(char* out, std::size_t size)
@@ -120,6 +127,70 @@ struct PlyElement
   std::uint64_t least_bytes = 0; // smallest possible size of one item
   long line = 0;
 };
+
+// A PCD data token as PCL splits lines: at spaces, tabs and carriage returns only.
+std::vector<std::string_view>
+pcdTokens(std::string_view line)
+{
+  std::vector<std::string_view> tokens;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    const std::size_t end = std::min(line.find_first_of(" \t\r", i), line.size());
+    if (end > i)
+      tokens.push_back(line.substr(i, end - i));
+    i = end + 1;
+  }
+  return tokens;
+}
+
+// PCL's header parser does not stop at DATA: it goes on taking lines for header lines while they
+// start with a header keyword, and a "FIELDS" line in the data empties the field list, after which
+// PCL writes past its buffers. Refuses data whose first lines PCL would take for header lines and,
+// for ASCII data, any of the first \a points lines that does not hold \a values numbers (PCL
+// would read a point of zeros, or crash).
+void
+checkPcdData(const std::string& path, std::uint64_t offset, long line_number, bool ascii,
+             std::uint64_t values, std::uint64_t points)
+{
+  static const char* const keywords[] = {"FIELDS", "COLUMNS", "SIZE",      "TYPE",   "COUNT",
+                                         "WIDTH",  "HEIGHT",  "VIEWPOINT", "POINTS", "DATA"};
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(offset));
+  std::string line;
+  bool header_like = true; // PCL still takes lines for header lines
+  std::uint64_t read = 0;
+  while ((header_like || (ascii && read < points)) && std::getline(in, line)) {
+    ++line_number;
+    if (line.empty())
+      continue; // PCL skips empty lines, in the header and in ASCII data
+    if (header_like) {
+      const std::string_view first(line.data(), std::min(line.find_first_of(" \t\r"), line.size()));
+      for (const char* keyword : keywords)
+        if (first.substr(0, std::strlen(keyword)) == keyword)
+          throw Error(path, line_number,
+                      "the data starts with the header keyword " + quoted(keyword) +
+                          ", which PCL's reader would take for a header line");
+      header_like = first.substr(0, 1) == "#" || first.substr(0, 7) == "VERSION";
+    }
+    if (!ascii)
+      continue;
+    if (line == "\r")
+      continue;
+    const std::vector<std::string_view> tokens = pcdTokens(line);
+    if (tokens.size() != values)
+      throw Error(path, line_number,
+                  "point " + std::to_string(read + 1) + " has " + std::to_string(tokens.size()) +
+                      " values, the fields need " + std::to_string(values));
+    for (std::string_view token : tokens)
+      if (!isNumber(token))
+        throw Error(path, line_number, "value " + quoted(token) + " is not a number");
+    ++read;
+  }
+  if (ascii && read < points)
+    throw Error(path, line_number,
+                "the data holds " + std::to_string(read) + " points, the header announces " +
+                    std::to_string(points) + " (truncated file or wrong count)");
+}
 } // namespace
 
 void
@@ -326,6 +397,8 @@ checkPcdHeader(const std::string& path)
     header.fail(std::to_string(points) + " points need at least " + std::to_string(needed) +
                 " bytes of data, the file has " + std::to_string(available) +
                 " after the header (truncated file or wrong count)");
+  checkPcdData(path, header.headerBytes(), header.number(), data == "ascii", values_per_point,
+               points);
 }
 
 void
@@ -346,21 +419,24 @@ checkStlSize(const std::string& path)
     return;
   const std::string_view start(head, static_cast<std::size_t>(std::min<std::uint64_t>(size, 84)));
   const std::size_t first = start.find_first_not_of(" \t\r\n");
-  // VTK calls a file binary when its first 256 bytes hold a byte above 127 or a control byte,
-  // even after "solid", and then trusts the triangle count (a 167-byte file allocated
-  // gigabytes): a "solid" file is ASCII only without such bytes (text holds no control byte
-  // but tab, line feed, carriage return, vertical tab and form feed).
+  // VTK reads a file as binary, trusting its triangle count, when at least 5 % of its first 256
+  // bytes are not text (text: 0x20-0x7f, tab, line feed, carriage return; kwsys's
+  // DetectFileType): a "solid" file is ASCII only below that share (a 237-byte file with vertical
+  // tabs allocated gigabytes).
   char sniff[256] = {};
   in.clear();
   in.seekg(0);
   in.read(sniff, sizeof sniff);
   const std::streamsize sniffed = in.gcount();
-  bool binary_bytes = false;
+  std::streamsize non_text = 0;
   for (std::streamsize i = 0; i < sniffed; ++i) {
     const unsigned char c = static_cast<unsigned char>(sniff[i]);
-    binary_bytes = binary_bytes || c > 127 || (c < 32 && (c < '\t' || c > '\r'));
+    non_text += (c >= 0x20 && c <= 0x7f) || c == '\t' || c == '\n' || c == '\r' ? 0 : 1;
   }
-  if (first != std::string_view::npos && start.substr(first, 5) == "solid" && !binary_bytes)
+  const bool binary_bytes =
+      sniffed > 0 && static_cast<double>(non_text) / static_cast<double>(sniffed) >= 0.05;
+  const bool solid = first != std::string_view::npos && start.substr(first, 5) == "solid";
+  if (solid && !binary_bytes)
     return;
   if (size == 0)
     throw Error(path, 0, "empty file: not an STL file");
@@ -368,8 +444,12 @@ checkStlSize(const std::string& path)
     throw Error(path, 0,
                 "not an STL file: " + std::to_string(size) +
                     " bytes, too short for a binary STL and no 'solid' line");
+  const std::string why_binary =
+      solid ? "starts with 'solid' but " + std::to_string(non_text) + " of its first " +
+                  std::to_string(sniffed) + " bytes are not text, so it is read as binary: "
+            : "";
   throw Error(path, 0,
-              "binary STL announces " + std::to_string(triangles) + " triangles, which take " +
+              why_binary + "binary STL announces " + std::to_string(triangles) + " triangles, which take " +
                   std::to_string(84 + 50 * static_cast<std::uint64_t>(triangles)) +
                   " bytes; the file has " + std::to_string(size) +
                   " (truncated, or not an STL file)");

@@ -39,8 +39,9 @@ void
 checkPcdHeader(const std::string& path);
 
 /** \brief Checks that a binary STL's size matches its triangle count (VTK's reader silently
- * returns the triangles of a truncated file); ASCII STL (starting with `solid` and not of binary
- * size) is left to the reader.
+ * returns the triangles of a truncated file, and allocates whatever a wrong count announces);
+ * ASCII STL (starting with `solid`, under 5 % non-text bytes in its first 256, as VTK tells
+ * them apart) is left to the reader.
  * \throws segmat::Error with path (line 0) otherwise.
  */
 void

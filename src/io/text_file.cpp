@@ -156,6 +156,13 @@ parseWhole(std::string_view token, Number& value, const char* not_a_number)
 }
 } // namespace
 
+bool
+isNumber(std::string_view token)
+{
+  double value = 0.0;
+  return *parseWhole(token, value, "-") == '\0';
+}
+
 double
 TextFile::parseFinite(std::string_view token, const char* what) const
 {

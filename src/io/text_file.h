@@ -158,6 +158,11 @@ writeTextAtomically(const std::string& path, const std::string& text);
 void
 checkMeshForWriting(const std::string& path, const TriangleMesh& mesh);
 
+/** \brief True when the whole \a token is a number (std::from_chars; a leading '+' allowed;
+ * "nan" and "inf" count). */
+bool
+isNumber(std::string_view token);
+
 /** \brief Token quoted for a message, cut to a readable length. */
 std::string
 quoted(std::string_view token);

@@ -82,6 +82,17 @@ MeshSegmentation::prepareWorkingMesh()
 }
 
 void
+MeshSegmentation::setPrincipalAxesFrame(bool enable)
+{
+  if (enable == principal_axes_)
+    return;
+  principal_axes_ = enable;
+  dropComputedMats(); // computed in the other frame; segment() remakes the frame copy
+  working_mesh_.reset();
+  surface_tree_.reset();
+}
+
+void
 MeshSegmentation::setBaseMat(const MedialMesh::ConstPtr& base)
 {
   dropComputedMats(); // a given MAT never pairs with a computed one

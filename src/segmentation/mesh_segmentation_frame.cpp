@@ -14,6 +14,7 @@ namespace segmat {
 struct MeshSegmentation::FrameCache
 {
   TriangleMesh::ConstPtr source;  // the input mesh the copy was made from
+  bool principal_axes = false;    // the frame option it was made with
   TriangleMesh::ConstPtr mesh;    // its copy in the normalised frame
   detail::NormalizedFrame frame;
   std::vector<int> face_order;    // face k of the copy = input face face_order[k]
@@ -31,10 +32,11 @@ MeshSegmentation::segment(std::vector<int>& face_labels)
   if (!frame_)
     frame_ = std::make_shared<FrameCache>();
   FrameCache& cache = *frame_;
-  if (cache.source != mesh_) {
-    detail::CanonicalMesh canonical = detail::canonicalMesh(*mesh_);
+  if (cache.source != mesh_ || cache.principal_axes != principal_axes_) {
+    detail::CanonicalMesh canonical = detail::canonicalMesh(*mesh_, principal_axes_);
     cache = FrameCache();
     cache.source = mesh_;
+    cache.principal_axes = principal_axes_;
     cache.mesh = std::make_shared<const TriangleMesh>(std::move(canonical.mesh));
     cache.frame = canonical.frame;
     cache.face_order = std::move(canonical.face_order);
