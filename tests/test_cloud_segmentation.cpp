@@ -324,23 +324,8 @@ TEST(CloudSegmentation, SettersKeepValidValues)
   EXPECT_EQ(seg.getKSearch(), 10);
   EXPECT_TRUE(seg.getUseInputNormalsFlag());
   EXPECT_TRUE(seg.getVisibilityFlag());
-  EXPECT_EQ(seg.getConsensusRuns(), 9);
-  EXPECT_FALSE(seg.getConsensusForEveryCloudFlag());
-  EXPECT_DOUBLE_EQ(seg.getConsensusMergeThreshold(), 0.5);
-  EXPECT_DOUBLE_EQ(seg.getNoisyBoundaryMergeFactor(), 0.5);
-  EXPECT_TRUE(seg.getNoisyCentresInsideFlag());
-  seg.setNoisyBoundaryMergeFactor(-1.0);
-  seg.setNoisyBoundaryMergeFactor(std::numeric_limits<double>::quiet_NaN());
-  EXPECT_DOUBLE_EQ(seg.getNoisyBoundaryMergeFactor(), 0.5);
-  seg.setNoisyBoundaryMergeFactor(0.0);
-  EXPECT_DOUBLE_EQ(seg.getNoisyBoundaryMergeFactor(), 0.0);
   seg.setKSearch(0);
   seg.setWorkingSize(0);
-  seg.setConsensusRuns(0);
-  seg.setConsensusMergeThreshold(-0.1);
-  seg.setConsensusMergeThreshold(std::numeric_limits<double>::quiet_NaN());
   EXPECT_EQ(seg.getKSearch(), 10);
   EXPECT_EQ(seg.getWorkingSize(), 20000u);
-  EXPECT_EQ(seg.getConsensusRuns(), 9);
-  EXPECT_DOUBLE_EQ(seg.getConsensusMergeThreshold(), 0.5);
 }

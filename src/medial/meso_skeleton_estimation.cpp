@@ -202,6 +202,8 @@ preprocessCloud(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, bool h
   stats.working_points = working.size();
   stats.normals_estimated = preprocessing.getNormalsEstimated();
   stats.smoothing_passes = preprocessing.getSmoothingPassesApplied();
+  stats.noise_sigma = preprocessing.getEstimatedNoise();
+  stats.spacing = preprocessing.getEstimatedSpacing();
   stats.seconds_preprocessing = secondsSince(start);
   return true;
 }

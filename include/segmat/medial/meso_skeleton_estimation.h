@@ -57,6 +57,8 @@ struct MesoSkeletonStatistics
   std::size_t medial_points = 0;    ///< output size
   bool normals_estimated = false;   ///< normals were estimated (not read from the cloud)
   int smoothing_passes = 0;         ///< smoothing passes applied (> 0: the cloud was noisy)
+  double noise_sigma = 0;           ///< estimated noise σ (CloudPreprocessing::getEstimatedNoise)
+  double spacing = 0;               ///< estimated spacing (CloudPreprocessing::getEstimatedSpacing)
   double seconds_preprocessing = 0; ///< resampling, normals, orientation
   double seconds_balls = 0;         ///< shrinking balls
   double seconds_medial = 0;        ///< filters, contraction, reduction, radii, normals

@@ -88,99 +88,6 @@ segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
                     std::vector<pcl::PointIndices>& parts,
                     std::vector<std::pair<std::string, double>>& stage_seconds);
 
-/** \brief 1 − Rand index of two labelings of the same points (the share of point pairs that
- * one puts together and the other apart); entries < 0 in either are skipped. O(n + L_a·L_b).
- * 0 for identical partitions, whatever the label numbers. */
-double
-randDistance(const std::vector<int>& a, const std::vector<int>& b);
-
-/** \brief The consensus of several labelings of the same points: the one with the least summed
- * randDistance() to the others (their medoid, as in cluster ensembles; Strehl & Ghosh, "Cluster
- * ensembles", JMLR 2002). Ties go to the lower index; -1 when \a labelings is empty. */
-int
-consensusLabeling(const std::vector<std::vector<int>>& labelings);
-
-/** \brief Merges, in \a labels, the adjacent parts that the runs put together: while some pair
- * of parts (P, Q) joined by an edge has a mean co-association above \a threshold — the share of
- * the point pairs p ∈ P, q ∈ Q that a labeling gives one label, averaged over \a labelings —
- * the pair with the highest is merged (average linkage, so a chain of weak links does not join
- * parts, unlike single linkage). A noise-made cut falls in a different place in each run, so
- * most runs join its two sides; a real boundary is cut by all. Ties: the lower pair first.
- * \param[in] labelings the runs' labelings of the same points (labels >= 0; < 0 skipped)
- * \param[in] edges point pairs that are neighbours (the adjacency of parts)
- * \param[in,out] labels the labeling to merge (one of the runs'); a merged part takes the lower
- * label
- * \param[in] keep_reproduced_cuts when true, a pair that at least a third of \a labelings cut
- * alike (each side at least 80 % one label of the run, the two labels different) is never
- * merged, however often the other runs join it: a real boundary that the noise lets only some
- * runs find (the seat and back of a noisy chair, PSB 101) is reproduced where it is found,
- * while a noise cut falls somewhere else in each run
- * \return per label of the input \a labels, the label it ended in */
-std::vector<int>
-mergeByConsensus(const std::vector<std::vector<int>>& labelings,
-                 const std::vector<std::pair<int, int>>& edges, double threshold,
-                 std::vector<int>& labels, bool keep_reproduced_cuts = false);
-
-/** \brief Moves each point of \a labels to the part the runs put it with most often, among its
- * own part and the parts of its neighbours: the part P with the highest
- * Σ_r |{q ∈ P : run r labels q as it labels the point}| / |P| — the point's mean
- * co-association with P over \a labelings (ties keep the point's part). The kept run's
- * boundaries are where its own thinning of the samples put them; the vote moves them to where
- * the runs agree. Parts are taken as they were before any point moved (one pass, independent of
- * the point order); a part is never created, only emptied.
- *
- * Only a neighbour's part is a candidate because the score favours a small part that other runs
- * hold inside a larger one: every point of that larger part then scores ~1 for the small part.
- * Without the restriction, points all over a noisy box (a box with a smaller box on top) would
- * join a small corner part that the other runs hold inside the box's part.
- * \param[in] labelings the runs' labelings of the same points (labels >= 0; < 0 skipped)
- * \param[in] edges point pairs that are neighbours (the k-NN graph of the transfer)
- * \param[in,out] labels the labeling to refine (one of the runs', after mergeByConsensus())
- * \return the number of points moved */
-int
-voteByConsensus(const std::vector<std::vector<int>>& labelings,
-                const std::vector<std::pair<int, int>>& edges, std::vector<int>& labels);
-
-/** \brief One segmentation of the working cloud through its medial mesh. */
-struct MedialMeshRun
-{
-  pcl::PointCloud<pcl::PointNormal>::Ptr working; ///< with the normals the run used
-  MedialMesh base, structured;
-  MatGraph::Ptr graph;
-  StructureTags tags;
-  std::vector<int> working_labels, label_parts; ///< as segmentWorkingCloud()
-  std::vector<pcl::PointIndices> parts;         ///< as segmentWorkingCloud()
-};
-
-/** \brief How segmentWithMedialMesh() ended. */
-enum class MedialMeshRunStatus
-{
-  Segmented,     ///< \a result holds the chosen run
-  NoMedialAxis,  ///< the first run found no medial axis (one part, for the caller)
-  Failed         ///< a later stage failed (PCL_ERROR said which)
-};
-
-/** \brief The medial-mesh branch of CloudSegmentation::segment(): medial mesh, graph and tags
- * (with the mirror-normal retry when \a retry), growing and transfer — \a runs times with the
- * Voronoi samples thinned in different orders (run r: sample order seed = \a estimation's + r,
- * so run 0 is the plain pipeline). Each run's working labels are merged by mergeByConsensus()
- * over all the runs (above \a merge_threshold; > 1: no merging), the consensusLabeling() of
- * the merged labelings is kept (when \a keep_reproduced_cuts, merged again from its own labels
- * keeping the cuts a third of the runs reproduce), and its points are moved by
- * voteByConsensus().
- * Each run works on its own copies of \a working and of the three stages; up to \a threads
- * runs go side by side (0: OpenMP's choice; the result does not depend on it). Stage seconds are summed over the
- * runs. Run 0 decides the outcome; a later run that fails is left out. \a estimation ends up
- * as the kept run's (its statistics and splat surface; its own sample order seed).
- * \param[out] chosen the run kept */
-MedialMeshRunStatus
-segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs,
-                      double merge_threshold, bool keep_reproduced_cuts, bool retry,
-                      int orientation_k, int transfer_k, bool visibility, unsigned int threads,
-                      CloudMedialMeshEstimation& estimation, const MatRegionGrowing& grower,
-                      const CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
-                      std::vector<std::pair<std::string, double>>& stage_seconds);
-
 /** \brief Input labels from working labels, renumbered by descending point count (ties: the
  * lower label first); parts[l] lists the input points of label l, ascending.
  * \param[in] input_to_working per input point, its working point (-1: no label)
@@ -217,11 +124,10 @@ labelInputPoints(const std::vector<int>& input_to_working, const std::vector<int
  *     data term = distance to each part's balls, crease-aware smoothness from the oriented
  *     normals; two cycles, as the reference); every input point then takes the label of the
  *     working point standing for it (its voxel's representative): "labels".
- * With the medial mesh (the default axis, CloudMedialAxis::MedialMesh), a cloud that the
- * preprocessing finds noisy goes through stages 2–5 several times with differently thinned
- * Voronoi samples, and the consensus run is kept (setConsensusRuns); its grower also merges
- * patches that share a long boundary without the visibility test
- * (setNoisyBoundaryMergeFactor).
+ * A noisy cloud needs no parameter: the preprocessing estimates the noise and the point
+ * spacing, smooths the points when the noise is a noticeable share of the spacing
+ * (getEstimatedNoise(), getDenoisingPasses()), and the rest of the pipeline runs as on a clean
+ * cloud, once (docs/noise.md).
  * Parts are numbered by descending point count. A cloud that encloses no volume (a flat patch,
  * a handful of points) is one part, with a warning.
  *
@@ -298,149 +204,29 @@ public:
     return skeleton_estimation_.getParameters().use_input_normals;
   }
 
-  /** \brief With estimated normals and the medial mesh: when the base MAT falls apart into
-   * more than 8 components (a solid's medial axis is connected; no clean psb-dev cloud has more
-   * than 8), orient
-   * the normals again with the mirror relation (NormalOrientation::setMirrorRelationFlag) and
-   * keep that medial mesh if it has at most 3/4 of the components (default true). Noise on a
-   * plate thinner than the orientation neighbourhood flips whole patches of normals; the inside
-   * test then cuts the plate's medial sheet to pieces. */
-  void
-  setFragmentedMatRetryFlag(bool flag)
-  {
-    fragmented_mat_retry_ = flag;
-  }
-
-  /** \brief Whether a fragmented base MAT is retried with mirror-related normals. */
-  bool
-  getFragmentedMatRetryFlag() const
-  {
-    return fragmented_mat_retry_;
-  }
-
-  /** \brief Segmentations of a noisy cloud from which one consensus is kept (>= 1, default 9;
-   * 1: a single run). Noise makes the medial mesh foam, and which foam sheets survive Q-MAT
-   * depends on which samples the Voronoi step keeps: single runs of one noisy cloud differ by
-   * tenths of RI. With the medial mesh, each run thins the samples in another order
-   * (CloudMedialMeshEstimation::setSampleOrderSeed) and the run whose working labels agree most
-   * with the others' (detail::consensusLabeling: the medoid under the Rand distance) is kept;
-   * a run that fragments the cloud by chance disagrees with all the others. Its boundaries then
-   * move to where the runs agree (detail::voteByConsensus). A cloud counts as
-   * noisy when the preprocessing smoothed it (estimated normals, noise above 10 % of the point
-   * spacing); clean clouds get one run unless setConsensusForEveryCloudFlag(). Costs one
-   * medial step, growing and transfer per run. */
-  void
-  setConsensusRuns(int runs);
-
-  /** \brief Segmentations of a noisy cloud from which one consensus is kept. */
-  int
-  getConsensusRuns() const
-  {
-    return consensus_runs_;
-  }
-
-  /** \brief Co-association above which two adjacent parts of a consensus run merge, before the
-   * medoid of the runs is chosen (default 0.5; > 1: no merging). Where noise cut a part, the cut
-   * falls elsewhere in each run, so the other runs join most of what one run split there; a
-   * real boundary is cut by all (detail::mergeByConsensus). A run's own vote for its cut counts
-   * too: with nine runs, 0.5 asks that five of the other eight join the pair, where 0.4 let four
-   * (a chair's seat and back that four runs grow into one part). */
-  void
-  setConsensusMergeThreshold(double threshold);
-
-  /** \brief Co-association above which two adjacent parts of a consensus run merge. */
+  /** \brief The noise the last segment() estimated on the cloud: the Gaussian σ of the working
+   * points' offsets from their local surface, in the input's units (0 when the cloud's own
+   * normals were used: such a cloud is taken as it is). */
   double
-  getConsensusMergeThreshold() const
+  getEstimatedNoise() const
   {
-    return consensus_merge_threshold_;
+    return stats_.noise_sigma;
   }
 
-  /** \brief When the kept consensus run is merged, keep apart every pair of its parts that at
-   * least a third of the runs cut alike (default true; detail::mergeByConsensus). Noise hides
-   * some real boundaries from most runs: a noisy chair's seat and back that most of nine runs
-   * grow into one part are then joined by the merge, though the runs that cut them cut them
-   * in the same place — a noise cut falls somewhere else in each run. The medoid is still
-   * chosen among the plainly merged runs (with such cuts kept there, the majority that misses
-   * them would tend to look closer to each other). */
-  void
-  setConsensusKeepReproducedCutsFlag(bool flag)
-  {
-    consensus_keep_reproduced_cuts_ = flag;
-  }
-
-  /** \brief Whether the kept consensus run keeps the cuts a third of the runs reproduce. */
-  bool
-  getConsensusKeepReproducedCutsFlag() const
-  {
-    return consensus_keep_reproduced_cuts_;
-  }
-
-  /** \brief κ of MatRegionGrowing::setSharedBoundaryMergeFactor() for clouds treated as noisy
-   * (default 0.5; 0: off). Patches of a noisy cloud's medial mesh
-   * that share a long boundary merge without the visibility test: noise cuts plates and rims
-   * along lines of spheres, and the pieces of a cut sheet need not see each other through the
-   * noisy ball union (a cup's wall cut into strips that share 7–15 spheres each, ~√n of the
-   * smaller strip; κ = 2 leaves such a wall in many parts). Clean clouds (and meshes) merge as
-   * SEG-MAT does. */
-  void
-  setNoisyBoundaryMergeFactor(double factor);
-
-  /** \brief κ of the long-boundary merge for clouds treated as noisy. */
+  /** \brief Median nearest-neighbour distance of the working points of the last segment(), in
+   * the input's units (0 when the cloud's own normals were used). */
   double
-  getNoisyBoundaryMergeFactor() const
+  getEstimatedSpacing() const
   {
-    return noisy_boundary_factor_;
+    return stats_.spacing;
   }
 
-  /** \brief For clouds treated as noisy, keep every sphere centre that Q-MAT merges inside the
-   * splat surface (MedialMeshEstimation::setKeepCentresInside; default true; clean clouds never
-   * test, for speed). A centre outside the shape is wrong by construction, and the mesh path
-   * never allows one. On noisy thin plates it decides whether a plate becomes its own part: a
-   * chair's back that would join the seat, glasses whose two lenses would join. Costs ~16 % of a
-   * noisy cloud's time. */
-  void
-  setNoisyCentresInsideFlag(bool flag)
-  {
-    noisy_centres_inside_ = flag;
-  }
-
-  /** \brief Whether Q-MAT keeps the merged centres of a noisy cloud inside its surface. */
-  bool
-  getNoisyCentresInsideFlag() const
-  {
-    return noisy_centres_inside_;
-  }
-
-  /** \brief Apply setConsensusRuns() to every cloud, not only to noisy ones (default false;
-   * e.g. for noisy scans that come with their own normals, which are not smoothed or measured).
-   */
-  void
-  setConsensusForEveryCloudFlag(bool flag)
-  {
-    consensus_every_cloud_ = flag;
-  }
-
-  /** \brief Whether every cloud gets the consensus runs. */
-  bool
-  getConsensusForEveryCloudFlag() const
-  {
-    return consensus_every_cloud_;
-  }
-
-  /** \brief Runs the last segment() made: 1 for a clean cloud (and the meso-skeleton), the
-   * consensus runs for a noisy one; 0 before any. */
+  /** \brief Smoothing passes the last segment() applied to the working points: 0 for a cloud
+   * found clean (or one whose normals were used). */
   int
-  getConsensusRunsMade() const
+  getDenoisingPasses() const
   {
-    return runs_made_;
-  }
-
-  /** \brief The run whose segmentation the last segment() kept (0 with a single run); one run
-   * with CloudMedialMeshEstimation::setSampleOrderSeed(seed + kept run) repeats it. */
-  int
-  getConsensusRunKept() const
-  {
-    return run_kept_;
+    return stats_.smoothing_passes;
   }
 
   /** \brief Test visibility inside the medial balls before merging parts (default true). */
@@ -598,15 +384,7 @@ private:
   CloudMedialAxis medial_axis_ = CloudMedialAxis::MedialMesh;
   int k_ = 10;
   bool visibility_ = true;
-  bool fragmented_mat_retry_ = true;
-  int consensus_runs_ = 9;
-  double consensus_merge_threshold_ = 0.5;
-  bool consensus_keep_reproduced_cuts_ = true;
-  bool consensus_every_cloud_ = false;
-  double noisy_boundary_factor_ = 0.5;
-  bool noisy_centres_inside_ = true;
-  int runs_made_ = 0;
-  int run_kept_ = 0;
+  MesoSkeletonStatistics stats_; ///< the last segment()'s preprocessing
 
   MedialMesh base_, structured_;
   pcl::PointCloud<pcl::PointNormal>::Ptr working_;

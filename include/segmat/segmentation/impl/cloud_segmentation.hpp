@@ -39,34 +39,6 @@ CloudSegmentation<PointT>::setKSearch(int k)
 }
 
 template <typename PointT>
-void
-CloudSegmentation<PointT>::setConsensusRuns(int runs)
-{
-  if (runs < 1) {
-    PCL_WARN("[segmat::CloudSegmentation::setConsensusRuns] At least 1 run; keeping %d.\n",
-             consensus_runs_);
-    return;
-  }
-  consensus_runs_ = runs;
-}
-
-template <typename PointT>
-void
-CloudSegmentation<PointT>::setConsensusMergeThreshold(double threshold)
-{
-  detail::assignChecked(consensus_merge_threshold_, threshold, threshold >= 0.0,
-                        "CloudSegmentation::setConsensusMergeThreshold", ">= 0");
-}
-
-template <typename PointT>
-void
-CloudSegmentation<PointT>::setNoisyBoundaryMergeFactor(double factor)
-{
-  detail::assignChecked(noisy_boundary_factor_, factor, factor >= 0.0,
-                        "CloudSegmentation::setNoisyBoundaryMergeFactor", ">= 0 (0: off)");
-}
-
-template <typename PointT>
 bool
 CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
 {
@@ -87,8 +59,7 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
 
   base_ = MedialMesh();
   structured_ = MedialMesh();
-  runs_made_ = 1;
-  run_kept_ = 0;
+  stats_ = MesoSkeletonStatistics();
   // Filled by the medial-mesh branch, or by segmentWorkingCloud() below for the meso-skeleton.
   std::vector<int> working_labels, label_parts;
   std::vector<pcl::PointIndices> grown;
@@ -102,53 +73,27 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
     const MesoSkeletonParameters& params = skeleton_estimation_.getParameters();
     const bool has_normals = detail::copyToPointNormal(*input_, *indices_, *cloud);
     std::vector<int> working_indices, copy_to_working;
-    MesoSkeletonStatistics stats;
     if (detail::preprocessCloud(cloud, has_normals && params.use_input_normals, params,
-                                *working_, working_indices, copy_to_working, stats)) {
-      stage_seconds_.emplace_back("preprocessing", stats.seconds_preprocessing);
+                                *working_, working_indices, copy_to_working, stats_)) {
+      stage_seconds_.emplace_back("preprocessing", stats_.seconds_preprocessing);
       input_to_working_ = detail::inputToWorking(input_->size(), *indices_, copy_to_working);
-      const bool noisy = stats.smoothing_passes > 0;
-      const bool treat_as_noisy = noisy || consensus_every_cloud_;
-      runs_made_ = treat_as_noisy ? consensus_runs_ : 1;
-      MatRegionGrowing grower = grower_;
-      MedialMeshEstimation& qmat = mesh_estimation_.getMedialMeshEstimation();
-      const bool caller_keeps_inside = qmat.getKeepCentresInside();
-      if (treat_as_noisy) {
-        grower.setSharedBoundaryMergeFactor(noisy_boundary_factor_);
-        if (noisy_centres_inside_)
-          qmat.setKeepCentresInside(true);
-      }
-      detail::MedialMeshRun run;
-      const detail::MedialMeshRunStatus status = detail::segmentWithMedialMesh(
-          *working_, runs_made_, consensus_merge_threshold_, consensus_keep_reproduced_cuts_,
-          stats.normals_estimated && fragmented_mat_retry_, params.orientation_k, k_, visibility_,
-          params.threads, mesh_estimation_, grower, transfer_, run, run_kept_, stage_seconds_);
-      // The estimation comes back from the kept run: the caller's own setting again.
-      qmat.setKeepCentresInside(caller_keeps_inside);
-      if (status == detail::MedialMeshRunStatus::Failed) {
-        stage_seconds_.clear();
-        deinitCompute();
-        return false;
-      }
-      medial_ok = status == detail::MedialMeshRunStatus::Segmented;
-      if (medial_ok) {
-        working_ = run.working;
-        base_ = std::move(run.base);
-        structured_ = std::move(run.structured);
-        graph = run.graph;
-        working_labels = std::move(run.working_labels);
-        label_parts = std::move(run.label_parts);
-        grown = std::move(run.parts);
-      }
+      medial_ok = detail::medialMeshGraph(working_, mesh_estimation_, base_, structured_, graph,
+                                          tags, stage_seconds_);
+      // Noise on a plate thinner than the orientation neighbourhood flips patches of estimated
+      // normals, and the inside test then cuts the plate's medial sheet to pieces.
+      if (medial_ok && stats_.normals_estimated)
+        detail::retryFragmentedWithMirrorNormals(working_, params.orientation_k, mesh_estimation_,
+                                                 base_, structured_, graph, tags,
+                                                 stage_seconds_);
     }
   }
   else {
     skeleton_estimation_.setInputCloud(input_);
     skeleton_estimation_.setIndices(indices_);
     medial_ok = skeleton_estimation_.compute(*skeleton_);
-    const MesoSkeletonStatistics& stats = skeleton_estimation_.getStatistics();
-    stage_seconds_.emplace_back("preprocessing", stats.seconds_preprocessing);
-    stage_seconds_.emplace_back("medial", stats.seconds_balls + stats.seconds_medial);
+    stats_ = skeleton_estimation_.getStatistics();
+    stage_seconds_.emplace_back("preprocessing", stats_.seconds_preprocessing);
+    stage_seconds_.emplace_back("medial", stats_.seconds_balls + stats_.seconds_medial);
     if (medial_ok) {
       *working_ = skeleton_estimation_.getWorkingCloud();
       input_to_working_ = skeleton_estimation_.getInputToWorking();
@@ -189,8 +134,7 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
   }
   graph_ = graph;
 
-  if (medial_axis_ == CloudMedialAxis::MesoSkeleton &&
-      !detail::segmentWorkingCloud(graph, tags, *working_, k_, visibility_, grower_, transfer_,
+  if (!detail::segmentWorkingCloud(graph, tags, *working_, k_, visibility_, grower_, transfer_,
                                    working_labels, label_parts, grown, stage_seconds_)) {
     stage_seconds_.clear();
     deinitCompute();
