@@ -10,6 +10,8 @@
 #include <segmat/segmentation/impl/cloud_segmentation.hpp>
 #include <segmat/segmentation/structure_tags.h>
 
+#include "../geometry/normalized_frame.h"
+
 #include <pcl/console/print.h>
 
 #include <algorithm>
@@ -178,6 +180,45 @@ segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
   label_parts = transfer.getLabelParts();
   stage_seconds.emplace_back("transfer", lap());
   return true;
+}
+
+CloudFrame
+moveToNormalizedFrame(pcl::PointCloud<pcl::PointNormal>& cloud)
+{
+  std::vector<Eigen::Vector3d> points(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    points[i] = cloud[i].getVector3fMap().cast<double>();
+  const NormalizedFrame normalized = NormalizedFrame::of(points);
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    cloud[i].getVector3fMap() = normalized.toFrame(points[i]).cast<float>();
+  CloudFrame frame;
+  frame.centre = normalized.centre;
+  frame.scale = normalized.scale;
+  return frame;
+}
+
+void
+moveFromNormalizedFrame(const CloudFrame& frame, const pcl::Indices& indices, MedialMesh& base,
+                        MedialMesh& structured, pcl::PointCloud<MedialPoint>& skeleton,
+                        MesoSkeletonStatistics& stats)
+{
+  NormalizedFrame normalized;
+  normalized.centre = frame.centre;
+  normalized.scale = frame.scale;
+  if (!base.empty())
+    base = normalized.fromFrame(base);
+  if (!structured.empty())
+    structured = normalized.fromFrame(structured);
+  for (MedialPoint& m : skeleton) {
+    m.getVector3fMap() = normalized.fromFrame(m.getVector3fMap().cast<double>()).cast<float>();
+    m.radius = static_cast<float>(m.radius / frame.scale);
+    if (m.surface_index >= 0)
+      m.surface_index = indices[m.surface_index];
+    if (m.contact_index >= 0)
+      m.contact_index = indices[m.contact_index];
+  }
+  stats.noise_sigma /= frame.scale;
+  stats.spacing /= frame.scale;
 }
 
 void

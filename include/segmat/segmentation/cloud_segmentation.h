@@ -88,6 +88,28 @@ segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
                     std::vector<pcl::PointIndices>& parts,
                     std::vector<std::pair<std::string, double>>& stage_seconds);
 
+/** \brief A cloud's normalised frame: p ↦ (p − centre) × scale (scale a power of two). */
+struct CloudFrame
+{
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double scale = 1.0;
+};
+
+/** \brief Moves the points of \a cloud into their normalised frame (centred on the bounding
+ * box of the finite points, scaled by a power of two to a diagonal in [1/√2, √2); normals
+ * unchanged). A cloud scaled by 2^k lands on the very same numbers.
+ * \return the frame */
+CloudFrame
+moveToNormalizedFrame(pcl::PointCloud<pcl::PointNormal>& cloud);
+
+/** \brief Maps what a segmentation in \a frame computed back to the input's frame: medial
+ * meshes, the meso-skeleton (its surface and contact indices from the copy's points to the
+ * input's through \a indices) and the noise and spacing estimates. */
+void
+moveFromNormalizedFrame(const CloudFrame& frame, const pcl::Indices& indices, MedialMesh& base,
+                        MedialMesh& structured, pcl::PointCloud<MedialPoint>& skeleton,
+                        MesoSkeletonStatistics& stats);
+
 /** \brief Input labels from working labels, renumbered by descending point count (ties: the
  * lower label first); parts[l] lists the input points of label l, ascending.
  * \param[in] input_to_working per input point, its working point (-1: no label)
@@ -142,6 +164,10 @@ labelInputPoints(const std::vector<int>& input_to_working, const std::vector<int
  *   seg.getLabeledCloud(labelled);
  * }
  * \endcode
+ *
+ * The cloud is segmented in a normalised frame: centred on its bounding box and scaled by a power
+ * of two to a diagonal near 1 (docs/robustness.md); what the getters return is in the input's
+ * frame. A cloud scaled by 2^k gets the same labels.
  *
  * PointT: any PCL type with xyz (instantiated for pcl::PointXYZ, pcl::PointNormal,
  * pcl::PointXYZRGBNormal). setIndices() restricts the segmentation to a subset; the other
@@ -337,7 +363,8 @@ public:
     return structured_;
   }
 
-  /** \brief The MAT graph of the last segment() (null when none was built). */
+  /** \brief The MAT graph of the last segment(), in the normalised frame the cloud was
+   * segmented in (null when none was built). */
   MatGraph::ConstPtr
   getGraph() const
   {
@@ -364,7 +391,7 @@ public:
   const MesoSkeletonStatistics&
   getMesoSkeletonStatistics() const
   {
-    return skeleton_estimation_.getStatistics();
+    return stats_;
   }
 
 protected:

@@ -68,15 +68,18 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
   MatGraph::Ptr graph;
   StructureTags tags;
   bool medial_ok = false;
+  // Every stage works on a copy in the normalised frame (centred, scaled by a power of two), so
+  // that where the cloud lies and how large it is cannot change its parts.
+  pcl::PointCloud<pcl::PointNormal>::Ptr cloud(new pcl::PointCloud<pcl::PointNormal>);
+  const bool has_normals = detail::copyToPointNormal(*input_, *indices_, *cloud);
+  const detail::CloudFrame frame = detail::moveToNormalizedFrame(*cloud);
+  const MesoSkeletonParameters& params = skeleton_estimation_.getParameters();
+  const bool use_normals = has_normals && params.use_input_normals;
+  std::vector<int> working_indices, copy_to_working;
   if (medial_axis_ == CloudMedialAxis::MedialMesh) {
-    pcl::PointCloud<pcl::PointNormal>::Ptr cloud(new pcl::PointCloud<pcl::PointNormal>);
-    const MesoSkeletonParameters& params = skeleton_estimation_.getParameters();
-    const bool has_normals = detail::copyToPointNormal(*input_, *indices_, *cloud);
-    std::vector<int> working_indices, copy_to_working;
-    if (detail::preprocessCloud(cloud, has_normals && params.use_input_normals, params,
-                                *working_, working_indices, copy_to_working, stats_)) {
+    if (detail::preprocessCloud(cloud, use_normals, params, *working_, working_indices,
+                                copy_to_working, stats_)) {
       stage_seconds_.emplace_back("preprocessing", stats_.seconds_preprocessing);
-      input_to_working_ = detail::inputToWorking(input_->size(), *indices_, copy_to_working);
       medial_ok = detail::medialMeshGraph(working_, mesh_estimation_, base_, structured_, graph,
                                           tags, stage_seconds_);
       // Noise on a plate thinner than the orientation neighbourhood flips patches of estimated
@@ -88,15 +91,11 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
     }
   }
   else {
-    skeleton_estimation_.setInputCloud(input_);
-    skeleton_estimation_.setIndices(indices_);
-    medial_ok = skeleton_estimation_.compute(*skeleton_);
-    stats_ = skeleton_estimation_.getStatistics();
+    medial_ok = detail::estimateMesoSkeleton(cloud, use_normals, params, *skeleton_, *working_,
+                                             working_indices, copy_to_working, stats_);
     stage_seconds_.emplace_back("preprocessing", stats_.seconds_preprocessing);
     stage_seconds_.emplace_back("medial", stats_.seconds_balls + stats_.seconds_medial);
     if (medial_ok) {
-      *working_ = skeleton_estimation_.getWorkingCloud();
-      input_to_working_ = skeleton_estimation_.getInputToWorking();
       const auto start = std::chrono::steady_clock::now();
       if (!detail::medialPointGraph(skeleton_, k_, graph)) {
         stage_seconds_.clear();
@@ -108,6 +107,9 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
   }
+  input_to_working_ = detail::inputToWorking(input_->size(), *indices_, copy_to_working);
+  // What the caller reads back is in the input's frame (the graph stays in the normalised one).
+  detail::moveFromNormalizedFrame(frame, *indices_, base_, structured_, *skeleton_, stats_);
 
   if (!medial_ok) {
     // No medial axis: one part when there is anything to label at all.
