@@ -27,6 +27,13 @@ using namespace segmat::cli;
 
 namespace {
 
+/// \a mat, or an empty one when there is none (a cloud without a medial axis).
+MedialMesh
+orEmpty(const MedialMesh::ConstPtr& mat)
+{
+  return mat ? *mat : MedialMesh();
+}
+
 /// \a mat moved back by the reader's origin (LoadedCloud::origin).
 MedialMesh
 inFileFrame(const MedialMesh& mat, const Eigen::Vector3d& origin)
@@ -150,9 +157,9 @@ run(int argc, char** argv)
   io::saveLabels(outputs.temporary(prefix + ".labels"), segmentation.getLabels());
   if (save_mat) {
     io::saveMa(outputs.temporary(prefix + "_base.ma"),
-               inFileFrame(segmentation.getBaseMat(), loaded.origin));
+               inFileFrame(orEmpty(segmentation.getBaseMat()), loaded.origin));
     io::saveMa(outputs.temporary(prefix + "_struct.ma"),
-               inFileFrame(segmentation.getStructuredMat(), loaded.origin));
+               inFileFrame(orEmpty(segmentation.getStructuredMat()), loaded.origin));
   }
   outputs.commit();
   if (boxes)

@@ -182,8 +182,8 @@ segment(CloudSegmentation& s, std::vector<int>& labels, RunInfo& info)
   labels = s.getLabels();
   info.stage_seconds = s.getStageSeconds();
   info.mat_computed = true;
-  info.base_spheres = s.getBaseMat().numVertices();
-  info.structured_spheres = s.getStructuredMat().numVertices();
+  info.base_spheres = s.getBaseMat() ? s.getBaseMat()->numVertices() : 0;
+  info.structured_spheres = s.getStructuredMat() ? s.getStructuredMat()->numVertices() : 0;
   info.cloud = true;
   info.noise_sigma = s.getEstimatedNoise();
   info.noise_spacing = s.getEstimatedSpacing();
@@ -218,8 +218,7 @@ medialMeshes(const segmat::MeshSegmentation& s)
 inline std::pair<segmat::MedialMesh::ConstPtr, segmat::MedialMesh::ConstPtr>
 medialMeshes(const CloudSegmentation& s)
 {
-  return {std::make_shared<segmat::MedialMesh>(s.getBaseMat()),
-          std::make_shared<segmat::MedialMesh>(s.getStructuredMat())};
+  return {s.getBaseMat(), s.getStructuredMat()};
 }
 
 } // namespace segmat_python

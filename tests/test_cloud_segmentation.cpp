@@ -340,3 +340,55 @@ TEST(CloudSegmentation, SettersKeepValidValues)
   EXPECT_EQ(seg.getKSearch(), 10);
   EXPECT_EQ(seg.getWorkingSize(), 20000u);
 }
+
+TEST(CloudSegmentation, ReusesItsFieldWhenOnlyGrowingOrTransferParametersChange)
+{
+  // Teddy sampled without normals: its 7–9 parts give δ0 something to merge.
+  const TriangleMesh mesh = io::loadOff(std::string(SEGMAT_DATA_DIR) + "/teddy/teddy.off");
+  const auto cloud = sampleMesh(mesh, 8000, 1).toCloud<pcl::PointXYZ>();
+  auto stage = [](const CloudSegmentation<pcl::PointXYZ>& seg, const std::string& name) {
+    for (const auto& s : seg.getStageSeconds())
+      if (s.first == name)
+        return s.second;
+    return -1.0;
+  };
+  CloudSegmentation<pcl::PointXYZ> seg;
+  seg.setNumberOfThreads(1);
+  seg.setInputCloud(cloud);
+  std::vector<pcl::PointIndices> parts;
+  ASSERT_TRUE(seg.segment(parts));
+  const MedialMesh::ConstPtr base = seg.getBaseMat();
+  ASSERT_TRUE(base);
+  EXPECT_GT(stage(seg, "medial"), 0.0);
+
+  // Other grower and transfer parameters: the field is kept.
+  seg.setGrowingThreshold(0.05);
+  seg.setSmoothnessWeight(0.5);
+  seg.setVisibilityFlag(false);
+  ASSERT_TRUE(seg.segment(parts));
+  EXPECT_EQ(seg.getBaseMat(), base);
+  for (const char* name : {"preprocessing", "medial", "graph"})
+    EXPECT_EQ(stage(seg, name), 0.0) << name;
+  EXPECT_GE(stage(seg, "grow_merge"), 0.0);
+  const std::vector<int> reused = seg.getLabels();
+
+  // ... and the labels are a fresh segmentation's with those parameters.
+  CloudSegmentation<pcl::PointXYZ> fresh;
+  fresh.setNumberOfThreads(1);
+  fresh.setInputCloud(cloud);
+  fresh.setGrowingThreshold(0.05);
+  fresh.setSmoothnessWeight(0.5);
+  fresh.setVisibilityFlag(false);
+  ASSERT_TRUE(fresh.segment(parts));
+  EXPECT_EQ(fresh.getLabels(), reused);
+
+  // A field parameter, or another cloud object, computes it again.
+  seg.setWorkingSize(6000);
+  ASSERT_TRUE(seg.segment(parts));
+  EXPECT_NE(seg.getBaseMat(), base);
+  EXPECT_GT(stage(seg, "medial"), 0.0);
+  const MedialMesh::ConstPtr resized = seg.getBaseMat();
+  seg.setInputCloud(std::make_shared<pcl::PointCloud<pcl::PointXYZ>>(*cloud));
+  ASSERT_TRUE(seg.segment(parts));
+  EXPECT_NE(seg.getBaseMat(), resized);
+}

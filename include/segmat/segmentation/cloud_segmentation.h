@@ -165,6 +165,13 @@ labelInputPoints(const std::vector<int>& input_to_working, const std::vector<int
  * }
  * \endcode
  *
+ * Stages 1–3 (the field) depend only on the input, the working size, the normals flag, the
+ * medial axis, its estimation's settings and, for the meso-skeleton, k: they are computed once
+ * and reused when segment() runs again with other grower or transfer parameters (δ0, η, α, λ,
+ * ω, the level of detail, visibility, the bend limit), as MeshSegmentation reuses its medial
+ * meshes. A reused stage reports 0 seconds. The input is taken as unchanged while it is the
+ * same object, of the same size, with the same indices.
+ *
  * The cloud is segmented in a normalised frame: centred on its bounding box and scaled by a power
  * of two to a diagonal near 1 (docs/robustness.md); what the getters return is in the input's
  * frame. A cloud scaled by 2^k gets the same labels.
@@ -193,6 +200,7 @@ public:
   setWorkingSize(std::size_t size)
   {
     skeleton_estimation_.setWorkingSize(size);
+    field_valid_ = false;
   }
 
   /** \brief Points kept for the medial step and the graph cut. */
@@ -221,6 +229,7 @@ public:
   setUseInputNormalsFlag(bool flag)
   {
     skeleton_estimation_.setUseInputNormalsFlag(flag);
+    field_valid_ = false;
   }
 
   /** \brief Whether the cloud's normals are used when PointT has them. */
@@ -283,6 +292,7 @@ public:
   setMedialAxis(CloudMedialAxis axis)
   {
     medial_axis_ = axis;
+    field_valid_ = false;
   }
 
   /** \brief The medial axis built. */
@@ -297,6 +307,7 @@ public:
   CloudMedialMeshEstimation&
   getMedialMeshEstimation()
   {
+    field_valid_ = false; // the caller may change it
     return mesh_estimation_;
   }
 
@@ -305,6 +316,7 @@ public:
   setMesoSkeletonParameters(const MesoSkeletonParameters& params)
   {
     skeleton_estimation_.setParameters(params);
+    field_valid_ = false;
   }
 
   /** \brief The meso-skeleton parameters. */
@@ -349,15 +361,17 @@ public:
     return skeleton_;
   }
 
-  /** \brief The base medial mesh of the last segment() (empty with the meso-skeleton). */
-  const MedialMesh&
+  /** \brief The base medial mesh of the last segment() (null with the meso-skeleton or before
+   * any). A new object when segment() computed it again. */
+  MedialMesh::ConstPtr
   getBaseMat() const
   {
     return base_;
   }
 
-  /** \brief The structured medial mesh of the last segment() (empty with the meso-skeleton). */
-  const MedialMesh&
+  /** \brief The structured medial mesh of the last segment() (null with the meso-skeleton or
+   * before any). */
+  MedialMesh::ConstPtr
   getStructuredMat() const
   {
     return structured_;
@@ -401,6 +415,11 @@ protected:
   using pcl::PCLBase<PointT>::deinitCompute;
 
 private:
+  /** \brief Preprocessing, medial axis and graph of the input (the field); false when a stage
+   * fails. */
+  bool
+  computeField();
+
   /** \brief Copies the input's xyz and the labels (and Glasbey colours for coloured types). */
   template <typename LabeledT>
   void
@@ -413,7 +432,16 @@ private:
   bool visibility_ = true;
   MesoSkeletonStatistics stats_; ///< the last segment()'s preprocessing
 
-  MedialMesh base_, structured_;
+  // The field: preprocessing, medial axis and graph, kept while only grower and transfer
+  // parameters change (see segment()).
+  bool field_valid_ = false;
+  bool field_medial_ok_ = false;
+  typename PointCloud::ConstPtr field_input_;
+  std::size_t field_size_ = 0;
+  pcl::Indices field_indices_;
+  std::vector<std::pair<std::string, double>> field_seconds_;
+  MedialMesh::ConstPtr base_, structured_;
+  StructureTags tags_;
   pcl::PointCloud<pcl::PointNormal>::Ptr working_;
   std::vector<int> input_to_working_;
 

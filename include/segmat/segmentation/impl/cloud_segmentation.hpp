@@ -35,7 +35,78 @@ CloudSegmentation<PointT>::setKSearch(int k)
     PCL_WARN("[segmat::CloudSegmentation::setKSearch] k must be positive; keeping %d.\n", k_);
     return;
   }
+  if (k != k_ && medial_axis_ == CloudMedialAxis::MesoSkeleton)
+    field_valid_ = false; // the meso-skeleton's graph links k neighbours
   k_ = k;
+}
+
+template <typename PointT>
+bool
+CloudSegmentation<PointT>::computeField()
+{
+  field_valid_ = false;
+  field_medial_ok_ = false;
+  field_seconds_.clear();
+  base_.reset();
+  structured_.reset();
+  skeleton_.reset(new pcl::PointCloud<MedialPoint>);
+  graph_.reset();
+  tags_ = StructureTags();
+  stats_ = MesoSkeletonStatistics();
+  working_.reset(new pcl::PointCloud<pcl::PointNormal>);
+  input_to_working_.clear();
+  // Every stage works on a copy in the normalised frame (centred, scaled by a power of two), so
+  // that where the cloud lies and how large it is cannot change its parts.
+  pcl::PointCloud<pcl::PointNormal>::Ptr cloud(new pcl::PointCloud<pcl::PointNormal>);
+  const bool has_normals = detail::copyToPointNormal(*input_, *indices_, *cloud);
+  const detail::CloudFrame frame = detail::moveToNormalizedFrame(*cloud);
+  const MesoSkeletonParameters& params = skeleton_estimation_.getParameters();
+  const bool use_normals = has_normals && params.use_input_normals;
+  std::vector<int> working_indices, copy_to_working;
+  MedialMesh base, structured;
+  MatGraph::Ptr graph;
+  bool medial_ok = false;
+  if (medial_axis_ == CloudMedialAxis::MedialMesh) {
+    if (detail::preprocessCloud(cloud, use_normals, params, *working_, working_indices,
+                                copy_to_working, stats_)) {
+      field_seconds_.emplace_back("preprocessing", stats_.seconds_preprocessing);
+      medial_ok = detail::medialMeshGraph(working_, mesh_estimation_, base, structured, graph,
+                                          tags_, field_seconds_);
+      // Noise on a plate thinner than the orientation neighbourhood flips patches of estimated
+      // normals, and the inside test then cuts the plate's medial sheet to pieces.
+      if (medial_ok && stats_.normals_estimated)
+        detail::retryFragmentedWithMirrorNormals(working_, params.orientation_k, mesh_estimation_,
+                                                 base, structured, graph, tags_, field_seconds_);
+    }
+  }
+  else {
+    medial_ok = detail::estimateMesoSkeleton(cloud, use_normals, params, *skeleton_, *working_,
+                                             working_indices, copy_to_working, stats_);
+    field_seconds_.emplace_back("preprocessing", stats_.seconds_preprocessing);
+    field_seconds_.emplace_back("medial", stats_.seconds_balls + stats_.seconds_medial);
+    if (medial_ok) {
+      const auto start = std::chrono::steady_clock::now();
+      if (!detail::medialPointGraph(skeleton_, k_, graph))
+        return false;
+      field_seconds_.emplace_back(
+          "graph",
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+  }
+  input_to_working_ = detail::inputToWorking(input_->size(), *indices_, copy_to_working);
+  // What the caller reads back is in the input's frame (the graph stays in the normalised one).
+  detail::moveFromNormalizedFrame(frame, *indices_, base, structured, *skeleton_, stats_);
+  if (!base.empty())
+    base_ = std::make_shared<const MedialMesh>(std::move(base));
+  if (!structured.empty())
+    structured_ = std::make_shared<const MedialMesh>(std::move(structured));
+  graph_ = medial_ok ? graph : nullptr;
+  field_medial_ok_ = medial_ok;
+  field_input_ = input_;
+  field_size_ = input_->size();
+  field_indices_ = *indices_;
+  field_valid_ = true;
+  return true;
 }
 
 template <typename PointT>
@@ -46,8 +117,6 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
   labels_.clear();
   mat_parts_.clear();
   stage_seconds_.clear();
-  graph_.reset();
-  skeleton_.reset(new pcl::PointCloud<MedialPoint>);
   if (!input_) {
     PCL_ERROR("[segmat::CloudSegmentation::segment] No input cloud.\n");
     return false;
@@ -56,62 +125,23 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
     PCL_ERROR("[segmat::CloudSegmentation::segment] Cannot initialise (no input?).\n");
     return false;
   }
-
-  base_ = MedialMesh();
-  structured_ = MedialMesh();
-  stats_ = MesoSkeletonStatistics();
-  // Filled by the medial-mesh branch, or by segmentWorkingCloud() below for the meso-skeleton.
-  std::vector<int> working_labels, label_parts;
-  std::vector<pcl::PointIndices> grown;
-  working_.reset(new pcl::PointCloud<pcl::PointNormal>);
-  input_to_working_.clear();
-  MatGraph::Ptr graph;
-  StructureTags tags;
-  bool medial_ok = false;
-  // Every stage works on a copy in the normalised frame (centred, scaled by a power of two), so
-  // that where the cloud lies and how large it is cannot change its parts.
-  pcl::PointCloud<pcl::PointNormal>::Ptr cloud(new pcl::PointCloud<pcl::PointNormal>);
-  const bool has_normals = detail::copyToPointNormal(*input_, *indices_, *cloud);
-  const detail::CloudFrame frame = detail::moveToNormalizedFrame(*cloud);
-  const MesoSkeletonParameters& params = skeleton_estimation_.getParameters();
-  const bool use_normals = has_normals && params.use_input_normals;
-  std::vector<int> working_indices, copy_to_working;
-  if (medial_axis_ == CloudMedialAxis::MedialMesh) {
-    if (detail::preprocessCloud(cloud, use_normals, params, *working_, working_indices,
-                                copy_to_working, stats_)) {
-      stage_seconds_.emplace_back("preprocessing", stats_.seconds_preprocessing);
-      medial_ok = detail::medialMeshGraph(working_, mesh_estimation_, base_, structured_, graph,
-                                          tags, stage_seconds_);
-      // Noise on a plate thinner than the orientation neighbourhood flips patches of estimated
-      // normals, and the inside test then cuts the plate's medial sheet to pieces.
-      if (medial_ok && stats_.normals_estimated)
-        detail::retryFragmentedWithMirrorNormals(working_, params.orientation_k, mesh_estimation_,
-                                                 base_, structured_, graph, tags,
-                                                 stage_seconds_);
-    }
+  // The cloud is taken as unchanged while it is the same object of the same size with the same
+  // indices: only the growing and the transfer run again.
+  const bool reuse = field_valid_ && input_ == field_input_ && input_->size() == field_size_ &&
+                     *indices_ == field_indices_;
+  if (reuse) {
+    for (const auto& stage : field_seconds_)
+      stage_seconds_.emplace_back(stage.first, 0.0);
   }
   else {
-    medial_ok = detail::estimateMesoSkeleton(cloud, use_normals, params, *skeleton_, *working_,
-                                             working_indices, copy_to_working, stats_);
-    stage_seconds_.emplace_back("preprocessing", stats_.seconds_preprocessing);
-    stage_seconds_.emplace_back("medial", stats_.seconds_balls + stats_.seconds_medial);
-    if (medial_ok) {
-      const auto start = std::chrono::steady_clock::now();
-      if (!detail::medialPointGraph(skeleton_, k_, graph)) {
-        stage_seconds_.clear();
-        deinitCompute();
-        return false;
-      }
-      stage_seconds_.emplace_back(
-          "graph",
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (!computeField()) {
+      deinitCompute();
+      return false;
     }
+    stage_seconds_ = field_seconds_;
   }
-  input_to_working_ = detail::inputToWorking(input_->size(), *indices_, copy_to_working);
-  // What the caller reads back is in the input's frame (the graph stays in the normalised one).
-  detail::moveFromNormalizedFrame(frame, *indices_, base_, structured_, *skeleton_, stats_);
 
-  if (!medial_ok) {
+  if (!field_medial_ok_) {
     // No medial axis: one part when there is anything to label at all.
     pcl::PointIndices all;
     for (const auto i : *indices_)
@@ -134,9 +164,10 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
     deinitCompute();
     return true;
   }
-  graph_ = graph;
 
-  if (!detail::segmentWorkingCloud(graph, tags, *working_, k_, visibility_, grower_, transfer_,
+  std::vector<int> working_labels, label_parts;
+  std::vector<pcl::PointIndices> grown;
+  if (!detail::segmentWorkingCloud(graph_, tags_, *working_, k_, visibility_, grower_, transfer_,
                                    working_labels, label_parts, grown, stage_seconds_)) {
     stage_seconds_.clear();
     deinitCompute();
