@@ -392,3 +392,24 @@ TEST(CloudSegmentation, ReusesItsFieldWhenOnlyGrowingOrTransferParametersChange)
   ASSERT_TRUE(seg.segment(parts));
   EXPECT_NE(seg.getBaseMat(), resized);
 }
+
+TEST(CloudSegmentation, LabelsFromSegmentAreThePartsOfEachPoint)
+{
+  // segment(std::vector<int>&), as MeshSegmentation gives labels: the parts of
+  // segment(std::vector<pcl::PointIndices>&) written per point.
+  const auto cloud = dumbbellCloud(6000, 3).toCloud<pcl::PointNormal>();
+  CloudSegmentation<pcl::PointNormal> seg;
+  seg.setNumberOfThreads(1);
+  seg.setInputCloud(cloud);
+  std::vector<int> labels;
+  ASSERT_TRUE(seg.segment(labels));
+  ASSERT_EQ(labels.size(), cloud->size());
+  std::vector<pcl::PointIndices> parts;
+  ASSERT_TRUE(seg.segment(parts));
+  EXPECT_GE(parts.size(), 2u);
+  std::vector<int> from_parts(cloud->size(), -1);
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    for (const int i : parts[p].indices)
+      from_parts[i] = int(p);
+  EXPECT_EQ(labels, from_parts);
+}

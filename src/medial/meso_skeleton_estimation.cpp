@@ -11,6 +11,7 @@
 #include "../common/point_kd_tree.h"
 #include "../common/thread_count.h"
 #include "local_fit.h"
+#include "preprocess_cloud.h"
 
 #include <pcl/console/print.h>
 

@@ -7,10 +7,11 @@
 #include <segmat/medial/medial_point_graph.h>
 #include <segmat/medial/normal_orientation.h>
 #include <segmat/segmentation/cloud_segmentation.h>
-#include <segmat/segmentation/impl/cloud_segmentation.hpp>
 #include <segmat/segmentation/structure_tags.h>
 
 #include "../geometry/normalized_frame.h"
+#include "cloud_segmentation_impl.hpp"
+#include "cloud_segmentation_steps.h"
 
 #include <pcl/console/print.h>
 

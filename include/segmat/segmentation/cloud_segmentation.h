@@ -8,8 +8,8 @@
 #include <segmat/geometry/medial_mesh.h>
 #include <segmat/medial/cloud_medial_mesh_estimation.h>
 #include <segmat/medial/meso_skeleton_estimation.h>
-#include <segmat/segmentation/label_transfer.h>
 #include <segmat/medial/mat_graph.h>
+#include <segmat/segmentation/label_transfer.h>
 #include <segmat/segmentation/mat_region_growing.h>
 #include <segmat/segmentation/mat_segmentation_parameters.h>
 #include <segmat/segmentation/structure_tags.h>
@@ -38,118 +38,31 @@ enum class CloudMedialAxis
   MesoSkeleton
 };
 
-namespace detail {
-
-/** \brief The MAT graph of a meso-skeleton: segmat::MedialPointGraph with k neighbours.
- * \return false (PCL_ERROR) when it cannot be built */
-bool
-medialPointGraph(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton, int k, MatGraph::Ptr& graph);
-
-/** \brief The medial mesh of the working cloud and its MAT graph and structure tags (as on
- * meshes). Appends "medial" and "graph" to \a stage_seconds.
- * \return false when the estimation fails (it said why) or the base MAT gives no graph node */
-bool
-medialMeshGraph(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& working,
-                CloudMedialMeshEstimation& estimation, MedialMesh& base, MedialMesh& structured,
-                MatGraph::Ptr& graph, StructureTags& tags,
-                std::vector<std::pair<std::string, double>>& stage_seconds);
-
-/** \brief When the base MAT computed from estimated normals falls apart (more than 8
- * components), orient \a working's normals again with the mirror relation
- * (NormalOrientation::setMirrorRelationFlag) and keep that medial mesh when it has at most 3/4
- * of the components. \a working, the medial meshes, \a graph and \a tags are replaced when the
- * retry is kept; its seconds are added to "medial" and "graph" either way.
- * \return true when the retry was kept */
-bool
-retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working, int orientation_k,
-                                 CloudMedialMeshEstimation& estimation, MedialMesh& base,
-                                 MedialMesh& structured, MatGraph::Ptr& graph, StructureTags& tags,
-                                 std::vector<std::pair<std::string, double>>& stage_seconds);
-
-/** \brief What CloudSegmentation does once the MAT graph exists (untyped core).
- * \param[in] graph the MAT graph (medial mesh or meso-skeleton)
- * \param[in] tags its structure tags (empty: every node bulky)
- * \param[in] working the working cloud with oriented normals the medial axis came from
- * \param[in] transfer_k neighbours of the working cloud's graph in the transfer
- * \param[in] visibility use the ball-union visibility when merging parts
- * \param[in,out] grower the grower, parameters set (its graph and visibility are set here)
- * \param[in,out] transfer the transfer, ω set (its inputs are set here)
- * \param[out] working_labels one label per working point, in growing order (compacted)
- * \param[out] label_parts for each label, the index of its part in \a parts
- * \param[out] parts the grower's parts (MAT-graph nodes)
- * \param[in,out] stage_seconds "grow_merge", "transfer" are appended
- * \return false (PCL_ERROR) when a stage fails
- */
-bool
-segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
-                    const pcl::PointCloud<pcl::PointNormal>& working, int transfer_k,
-                    bool visibility, MatRegionGrowing& grower, CloudLabelTransfer& transfer,
-                    std::vector<int>& working_labels, std::vector<int>& label_parts,
-                    std::vector<pcl::PointIndices>& parts,
-                    std::vector<std::pair<std::string, double>>& stage_seconds);
-
-/** \brief A cloud's normalised frame: p ↦ (p − centre) × scale (scale a power of two). */
-struct CloudFrame
-{
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  double scale = 1.0;
-};
-
-/** \brief Moves the points of \a cloud into their normalised frame (centred on the bounding
- * box of the finite points, scaled by a power of two to a diagonal in [1/√2, √2); normals
- * unchanged). A cloud scaled by 2^k lands on the very same numbers.
- * \return the frame */
-CloudFrame
-moveToNormalizedFrame(pcl::PointCloud<pcl::PointNormal>& cloud);
-
-/** \brief Maps what a segmentation in \a frame computed back to the input's frame: medial
- * meshes, the meso-skeleton (its surface and contact indices from the copy's points to the
- * input's through \a indices) and the noise and spacing estimates. */
-void
-moveFromNormalizedFrame(const CloudFrame& frame, const pcl::Indices& indices, MedialMesh& base,
-                        MedialMesh& structured, pcl::PointCloud<MedialPoint>& skeleton,
-                        MesoSkeletonStatistics& stats);
-
-/** \brief Input labels from working labels, renumbered by descending point count (ties: the
- * lower label first); parts[l] lists the input points of label l, ascending.
- * \param[in] input_to_working per input point, its working point (-1: no label)
- * \param[in] working_labels per working point, its label
- * \param[out] labels per input point (-1 where input_to_working is -1)
- * \param[out] parts per final label, its input points
- * \param[out] rank per working label, its final label
- */
-void
-labelInputPoints(const std::vector<int>& input_to_working, const std::vector<int>& working_labels,
-                 std::vector<int>& labels, std::vector<pcl::PointIndices>& parts,
-                 std::vector<int>& rank);
-
-} // namespace detail
 
 /** \brief End-to-end part segmentation of a point cloud with SEG-MAT (Lin et al., "SEG-MAT: 3D
  * Shape Segmentation Using Medial Axis Transform", IEEE TVCG 2022, §6: point clouds).
  *
  * Stages, each timed (getStageSeconds()):
  *  1. "preprocessing": finite points, resampled to the working size (~20k), normals (the
- *     cloud's own, or PCA + MST orientation) — segmat::CloudPreprocessing;
- *  2. "medial": shrinking balls, filters, contraction, reduction to ~2000 medial points —
- *     segmat::MesoSkeletonEstimation;
- *  3. "graph": the MAT graph of the medial points — segmat::MedialPointGraph;
- *  4. "grow_merge": the mesh path's grower, unchanged (segmat::MatRegionGrowing: growing,
- *     swallowing, tiny patches); with point nodes its cost is C_r + α·C_θ (no medial
- *     primitives: C_mp drops out). No structured MAT exists for a cloud, so every node is bulky
- *     (tag 0). Then SEG-MAT's three merging rounds with the grower's own pieces, but with
- *     patches adjacent when a graph edge joins them (the grower asks for a shared sphere, which
- *     point nodes never have; see src/segmentation/cloud_segmentation.cpp). Merging tests
- *     visibility against the union of the medial balls (segmat::BallUnionVisibility;
- *     setVisibilityFlag);
+ *     cloud's own, or PCA + MST orientation). Without normals the noise and the spacing are
+ *     estimated and a noisy cloud is smoothed first (getEstimatedNoise(), getDenoisingPasses();
+ *     docs/noise.md): a noisy cloud needs no parameter — segmat::CloudPreprocessing;
+ *  2. "medial": with CloudMedialAxis::MedialMesh (the default) the Voronoi medial mesh of the
+ *     working points, simplified by Q-MAT to a base and a structured MAT, as on meshes
+ *     (segmat::CloudMedialMeshEstimation; when estimated normals leave the base MAT in many
+ *     pieces, the normals are oriented again with the mirror relation and the less fragmented
+ *     axis is kept); with CloudMedialAxis::MesoSkeleton shrinking balls reduced to ~2000 medial
+ *     points (segmat::MesoSkeletonEstimation);
+ *  3. "graph": the MAT graph (MatGraph::fromMedialMesh and the structure tags, or
+ *     segmat::MedialPointGraph);
+ *  4. "grow_merge": the mesh path's grower (segmat::MatRegionGrowing: growing, swallowing,
+ *     tiny patches, SEG-MAT's three merging rounds with the visibility test against the union
+ *     of the medial balls, setVisibilityFlag). Medial points have no primitives, so on the
+ *     meso-skeleton the cost is C_r + α·C_θ and every node is bulky;
  *  5. "transfer": α-expansion on the working cloud's k-NN graph (segmat::CloudLabelTransfer,
  *     data term = distance to each part's balls, crease-aware smoothness from the oriented
  *     normals; two cycles, as the reference); every input point then takes the label of the
  *     working point standing for it (its voxel's representative): "labels".
- * A noisy cloud needs no parameter: the preprocessing estimates the noise and the point
- * spacing, smooths the points when the noise is a noticeable share of the spacing
- * (getEstimatedNoise(), getDenoisingPasses()), and the rest of the pipeline runs as on a clean
- * cloud, once (docs/noise.md).
  * Parts are numbered by descending point count. A cloud that encloses no volume (a flat patch,
  * a handful of points) is one part, with a warning.
  *
@@ -157,9 +70,8 @@ labelInputPoints(const std::vector<int>& input_to_working, const std::vector<int
  * pcl::PointCloud<pcl::PointNormal>::Ptr cloud = ...;   // or PointXYZ: normals are estimated
  * segmat::CloudSegmentation<pcl::PointNormal> seg;
  * seg.setInputCloud(cloud);
- * std::vector<pcl::PointIndices> parts;
- * if (seg.segment(parts)) {
- *   const std::vector<int>& labels = seg.getLabels();  // one per input point
+ * std::vector<int> labels;                             // one per input point
+ * if (seg.segment(labels)) {                            // or segment(parts): PointIndices
  *   pcl::PointCloud<pcl::PointXYZL> labelled;
  *   seg.getLabeledCloud(labelled);
  * }
@@ -176,8 +88,8 @@ labelInputPoints(const std::vector<int>& input_to_working, const std::vector<int
  * of two to a diagonal near 1 (docs/robustness.md); what the getters return is in the input's
  * frame. A cloud scaled by 2^k gets the same labels.
  *
- * PointT: any PCL type with xyz (instantiated for pcl::PointXYZ, pcl::PointNormal,
- * pcl::PointXYZRGBNormal). setIndices() restricts the segmentation to a subset; the other
+ * PointT: pcl::PointXYZ, pcl::PointNormal or pcl::PointXYZRGBNormal (the library is compiled
+ * for these; copy other types into one of them). setIndices() restricts the segmentation to a subset; the other
  * points get label -1.
  */
 template <typename PointT>
@@ -334,6 +246,14 @@ public:
   bool
   segment(std::vector<pcl::PointIndices>& parts);
 
+  /** \brief Segment the cloud, as MeshSegmentation::segment() does for meshes.
+   * \param[out] labels one label per input point (getLabels()): the part number, numbered by
+   *             descending part size; -1 for non-finite points and points outside the indices.
+   *             Empty on failure.
+   * \return false (PCL_ERROR) as segment(std::vector<pcl::PointIndices>&) */
+  bool
+  segment(std::vector<int>& labels);
+
   /** \brief One label per input point from the last segment(): the part number, -1 for
    * non-finite points and points outside the indices.
    */
@@ -454,6 +374,3 @@ private:
 
 } // namespace segmat
 
-#if defined(PCL_NO_PRECOMPILE) || defined(SEGMAT_NO_PRECOMPILE)
-#include <segmat/segmentation/impl/cloud_segmentation.hpp>
-#endif

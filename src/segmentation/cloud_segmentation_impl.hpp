@@ -3,10 +3,14 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #pragma once
+// Private to src/: CloudSegmentation's template code, instantiated in cloud_segmentation.cpp.
 
 #include <segmat/common/checked_setter.h>
 #include <segmat/medial/impl/meso_skeleton_estimation.hpp>
 #include <segmat/segmentation/cloud_segmentation.h>
+
+#include "../medial/preprocess_cloud.h"
+#include "cloud_segmentation_steps.h"
 
 #include <pcl/common/colors.h>
 #include <pcl/common/point_tests.h>
@@ -186,6 +190,16 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   deinitCompute();
   return true;
+}
+
+template <typename PointT>
+bool
+CloudSegmentation<PointT>::segment(std::vector<int>& labels)
+{
+  std::vector<pcl::PointIndices> parts;
+  const bool ok = segment(parts);
+  labels = labels_;
+  return ok;
 }
 
 template <typename PointT>
