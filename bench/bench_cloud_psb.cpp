@@ -13,8 +13,6 @@
  *        [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] [--reference-crease]
  *        [--noise-seeds N] [--first-noise-seed S] [--dump DIR] [--no-visibility]
  *        [--eta F] [--omega F]
- *        [--consensus-runs N] [--consensus-merge F] [--noisy-boundary-merge F]
- *        [--noisy-centres-outside]
  *   PSB_DIR defaults to ../shared/data/psb-dev (off/N.off, seg/Benchmark/N/N_k.seg).
  *   --dump DIR writes DIR/<model>_<a|b|c>.txt: "x y z label truth nx ny nz" per point (the
  *   cloud as segmented, our label, the first human's label, the sample's true normal).
@@ -24,30 +22,19 @@
  *   --no-visibility merges parts without the ball-union visibility test (setVisibilityFlag).
  *   --eta F / --omega F set the minimal region fraction η / the transfer smoothness ω
  *   (setMinRegionFraction / setSmoothnessWeight; defaults: the library's).
- *   --consensus-runs N segmentations of a noisy cloud to take the consensus of
- *   (CloudSegmentation::setConsensusRuns; 1: a single run).
- *   --consensus-merge F co-association above which each consensus run's adjacent parts merge
- *   before the medoid is chosen (CloudSegmentation::setConsensusMergeThreshold; 2: none).
- *   --merge-reproduced-cuts lets the kept run's merge join cuts that a third of the runs make
- *   alike (setConsensusKeepReproducedCutsFlag(false)).
- *   --noisy-boundary-merge F  κ of the long-boundary merge for noisy clouds
- *   (CloudSegmentation::setNoisyBoundaryMergeFactor; 0: off).
- *   --keep-inside keeps Q-MAT's merged centres inside the surface for every cloud;
- *   --noisy-centres-outside lets them leave it for noisy clouds too
- *   (CloudSegmentation::setNoisyCentresInsideFlag(false)).
+ *   --keep-inside keeps Q-MAT's merged centres inside the surface.
  */
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"
+#include "cloud_run.h"
 
 #include <segmat/common/error.h>
 #include <segmat/io/off.h>
 #include <segmat/io/seg.h>
-#include <segmat/segmentation/cloud_segmentation.h>
 
 #include <pcl/console/print.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -79,66 +66,23 @@ struct Result
 /// Settings from the command line (defaults: the library's).
 struct Settings
 {
-  bool meso_skeleton = false;
-  long samples = -1;
-  int smoothing = -1;
-  bool keep_inside = false;
-  bool reference_crease = false;
+  segmat::bench::CloudRunSettings run; ///< how each cloud is segmented (normals: per condition)
   int noise_seeds = 1;  ///< condition (c): noise draws averaged
   int first_noise_seed = 2; ///< condition (c): seed of the first draw
   std::string dump_dir; ///< when set: one point file per model and condition (see Usage)
-  bool visibility = true; ///< merging tests visibility in the ball union
-  double eta = -1.0;      ///< minimal region fraction η (< 0: the library's)
-  double omega = -1.0;    ///< transfer smoothness ω (< 0: the library's)
-  int consensus_runs = -1; ///< runs of a noisy cloud (< 0: the library's)
-  double consensus_merge = -1.0; ///< merge threshold (< 0: the library's)
-  double noisy_boundary = -1.0;  ///< long-boundary merge factor of noisy clouds (< 0: the library's)
-  bool noisy_centres_inside = true; ///< Q-MAT keeps a noisy cloud's merged centres inside
-  bool keep_reproduced_cuts = true;  ///< the kept run keeps the cuts a third of the runs make
 };
 
 Result
 run(const SampledCloud& sampled, bool normals, const std::vector<std::vector<int>>& truths,
     const Settings& settings, const std::string& dump_name)
 {
-  segmat::CloudSegmentation<pcl::PointNormal> seg;
-  seg.setInputCloud(sampled.toPointNormal());
-  seg.setUseInputNormalsFlag(normals);
-  seg.setNumberOfThreads(1);
-  seg.setVisibilityFlag(settings.visibility);
-  if (settings.eta >= 0.0)
-    seg.setMinRegionFraction(settings.eta);
-  if (settings.omega >= 0.0)
-    seg.setSmoothnessWeight(settings.omega);
-  if (settings.consensus_runs > 0)
-    seg.setConsensusRuns(settings.consensus_runs);
-  if (settings.consensus_merge >= 0.0)
-    seg.setConsensusMergeThreshold(settings.consensus_merge);
-  if (settings.noisy_boundary >= 0.0)
-    seg.setNoisyBoundaryMergeFactor(settings.noisy_boundary);
-  seg.setNoisyCentresInsideFlag(settings.noisy_centres_inside);
-  seg.setConsensusKeepReproducedCutsFlag(settings.keep_reproduced_cuts);
-  if (settings.meso_skeleton)
-    seg.setMedialAxis(segmat::CloudMedialAxis::MesoSkeleton);
-  if (settings.smoothing >= 0) {
-    segmat::MesoSkeletonParameters params = seg.getMesoSkeletonParameters();
-    params.smoothing_iterations = settings.smoothing;
-    seg.setMesoSkeletonParameters(params);
-  }
-  seg.getMedialMeshEstimation().getMedialMeshEstimation().setKeepCentresInside(
-      settings.keep_inside);
-  if (settings.reference_crease)
-    seg.setCreaseModel(segmat::CreaseModel::Reference);
-  if (settings.samples >= 0)
-    seg.getMedialMeshEstimation().getMedialMeshEstimation().setMaxSampleCount(
-        static_cast<std::size_t>(settings.samples));
-  std::vector<pcl::PointIndices> parts;
-  const auto start = std::chrono::steady_clock::now();
-  const bool ok = seg.segment(parts);
+  segmat::bench::CloudRunSettings how = settings.run;
+  how.normals = normals;
+  const segmat::bench::CloudRun segmented = segmat::bench::segmentSampledCloud(sampled, how);
   Result r;
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  r.parts = ok ? int(parts.size()) : 0;
-  std::vector<int> labels = ok ? seg.getLabels() : std::vector<int>(sampled.size(), 0);
+  r.seconds = segmented.seconds;
+  r.parts = segmented.parts;
+  const std::vector<int>& labels = segmented.labels;
   for (const auto& truth : truths)
     r.ri += randIndexError(labels, truth);
   if (!settings.dump_dir.empty()) {
@@ -199,35 +143,25 @@ main(int argc, char** argv)
     else if (arg == "--json")
       json = true;
     else if (arg == "--meso-skeleton")
-      settings.meso_skeleton = true;
+      settings.run.meso_skeleton = true;
     else if (arg == "--samples" && i + 1 < argc)
-      settings.samples = std::stol(argv[++i]);
+      settings.run.samples = std::stol(argv[++i]);
     else if (arg == "--keep-inside")
-      settings.keep_inside = true;
+      settings.run.keep_inside = true;
     else if (arg == "--reference-crease")
-      settings.reference_crease = true;
+      settings.run.reference_crease = true;
     else if (arg == "--smoothing" && i + 1 < argc)
-      settings.smoothing = std::stoi(argv[++i]);
+      settings.run.smoothing = std::stoi(argv[++i]);
     else if (arg == "--noise-seeds" && i + 1 < argc)
       settings.noise_seeds = std::max(1, std::stoi(argv[++i]));
     else if (arg == "--first-noise-seed" && i + 1 < argc)
       settings.first_noise_seed = std::stoi(argv[++i]);
     else if (arg == "--eta" && i + 1 < argc)
-      settings.eta = std::stod(argv[++i]);
+      settings.run.eta = std::stod(argv[++i]);
     else if (arg == "--omega" && i + 1 < argc)
-      settings.omega = std::stod(argv[++i]);
-    else if (arg == "--consensus-runs" && i + 1 < argc)
-      settings.consensus_runs = std::stoi(argv[++i]);
-    else if (arg == "--consensus-merge" && i + 1 < argc)
-      settings.consensus_merge = std::stod(argv[++i]);
-    else if (arg == "--noisy-boundary-merge" && i + 1 < argc)
-      settings.noisy_boundary = std::stod(argv[++i]);
-    else if (arg == "--noisy-centres-outside")
-      settings.noisy_centres_inside = false;
-    else if (arg == "--merge-reproduced-cuts")
-      settings.keep_reproduced_cuts = false;
+      settings.run.omega = std::stod(argv[++i]);
     else if (arg == "--no-visibility")
-      settings.visibility = false;
+      settings.run.visibility = false;
     else if (arg == "--dump" && i + 1 < argc)
       settings.dump_dir = argv[++i];
     else if (arg == "--conditions" && i + 1 < argc)
@@ -237,8 +171,7 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_cloud_psb [PSB_DIR] [--points N] [--models 1,6] [--json] "
                    "[--conditions abc] [--meso-skeleton] [--samples N] [--smoothing N] [--keep-inside] "
-                   "[--reference-crease] [--noise-seeds N] [--first-noise-seed S] [--dump DIR] [--no-visibility] [--eta F] [--omega F] [--consensus-runs N] [--consensus-merge F] [--noisy-boundary-merge F] "
-                   "[--noisy-centres-outside]\n";
+                   "[--reference-crease] [--noise-seeds N] [--first-noise-seed S] [--dump DIR] [--no-visibility] [--eta F] [--omega F]\n";
       return 2;
     }
   }

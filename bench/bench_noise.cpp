@@ -25,12 +25,12 @@
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"
 #include "bench_common.h"
+#include "cloud_run.h"
 
 #include <segmat/common/error.h>
 #include <segmat/evaluation/psb_metrics.h>
 #include <segmat/io/off.h>
 #include <segmat/io/seg.h>
-#include <segmat/segmentation/cloud_segmentation.h>
 #include <segmat/segmentation/mesh_segmentation.h>
 
 #include <pcl/console/print.h>
@@ -104,17 +104,11 @@ segmentCloud(const segmat::test::SampledCloud& clean, double level, std::uint32_
   segmat::test::SampledCloud noisy = clean;
   if (level > 0.0)
     segmat::test::addGaussianNoise(noisy, level / 100.0, seed);
-  segmat::CloudSegmentation<pcl::PointNormal> seg;
-  seg.setInputCloud(noisy.toPointNormal());
-  seg.setUseInputNormalsFlag(false);
-  seg.setNumberOfThreads(1);
-  std::vector<pcl::PointIndices> parts;
-  const auto start = std::chrono::steady_clock::now();
-  const bool ok = seg.segment(parts);
+  const segmat::bench::CloudRun run = segmat::bench::segmentSampledCloud(noisy, {});
   Result r;
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  r.parts = ok ? int(parts.size()) : 0;
-  const std::vector<int> labels = ok ? seg.getLabels() : std::vector<int>(noisy.size(), 0);
+  r.seconds = run.seconds;
+  r.parts = run.parts;
+  const std::vector<int>& labels = run.labels;
   for (const auto& human : humans)
     r.ri += segmat::test::randIndexError(labels, clean.pointLabels(human)) / double(humans.size());
   return r;

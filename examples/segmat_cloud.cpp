@@ -27,7 +27,12 @@ using namespace segmat::cli;
 
 namespace {
 
-const char* const kNoise = "Noise handling (being reworked; may change)";
+/// \a mat, or an empty one when there is none (a cloud without a medial axis).
+MedialMesh
+orEmpty(const MedialMesh::ConstPtr& mat)
+{
+  return mat ? *mat : MedialMesh();
+}
 
 /// \a mat moved back by the reader's origin (LoadedCloud::origin).
 MedialMesh
@@ -94,30 +99,6 @@ run(int argc, char** argv)
                 segmentation.setMedialAxis(CloudMedialAxis::MesoSkeleton);
                 meso_skeleton = true;
               });
-  parser.add(kNoise, "--runs", "N", "segmentations of a noisy cloud to keep the consensus of\n"
-             "(default 9; 1: one run)", [&](const std::string& v) {
-               segmentation.setConsensusRuns(parseInteger(v, 1, 1000));
-             });
-  parser.flag(kNoise, "--runs-always", "consensus runs for every cloud, not only noisy ones",
-              [&] { segmentation.setConsensusForEveryCloudFlag(true); });
-  parser.add(kNoise, "--runs-merge", "F", "merge each run's adjacent parts that the runs join\n"
-             "with a mean co-association above F (default 0.5; above 1: no merging)",
-             [&](const std::string& v) {
-               segmentation.setConsensusMergeThreshold(parseNumberIn(v, 0.0, 1e9, "a number >= 0"));
-             });
-  parser.flag(kNoise, "--runs-merge-reproduced",
-              "the kept run's merge may join a cut a third of the runs make\n"
-              "alike (by default such cuts are kept)",
-              [&] { segmentation.setConsensusKeepReproducedCutsFlag(false); });
-  parser.add(kNoise, "--boundary-merge", "K", "parts of a noisy cloud that share at least\n"
-             "K*sqrt(n) spheres merge without the visibility test (default 0.5;\n"
-             "0: off, as in SEG-MAT)", [&](const std::string& v) {
-               segmentation.setNoisyBoundaryMergeFactor(parseNumberIn(v, 0.0, 1e9, "a number >= 0"));
-             });
-  parser.flag(kNoise, "--noisy-centres-outside",
-              "let Q-MAT move a noisy cloud's merged sphere centres out of the\n"
-              "surface (faster; by default they are kept inside)",
-              [&] { segmentation.setNoisyCentresInsideFlag(false); });
   parser.flag(kOutput, "--boxes",
               "also write PREFIX_boxes.json and PREFIX_boxes.ply: one tight oriented\n"
               "box per part (docs/abstraction.md)", boxes);
@@ -128,8 +109,10 @@ run(int argc, char** argv)
              "a number in [-1, 1] goes between them",
              [&](const std::string& v) { applyDetailLevel(segmentation, v); });
   addCommonOptions(parser, common);
-  parser.note("--json prints parts, point_counts, seconds per stage (summed over the runs),\n"
-              "runs [made, kept] and origin (what a cloud far from 0 was moved by; outputs\n"
+  parser.note("A noisy cloud needs no option: its noise is estimated and the points smoothed\n"
+              "(docs/noise.md). --json prints parts, point_counts, seconds per stage, noise\n"
+              "{sigma, spacing, passes} (estimated, in the file's units; 0 when the file's\n"
+              "normals were used) and origin (what a cloud far from 0 was moved by; outputs\n"
               "are written back in the file's frame).");
 
   if (!parser.parse(argc, argv))
@@ -179,9 +162,9 @@ run(int argc, char** argv)
   io::saveLabels(outputs.temporary(prefix + ".labels"), segmentation.getLabels());
   if (save_mat) {
     io::saveMa(outputs.temporary(prefix + "_base.ma"),
-               inFileFrame(segmentation.getBaseMat(), loaded.origin));
+               inFileFrame(orEmpty(segmentation.getBaseMat()), loaded.origin));
     io::saveMa(outputs.temporary(prefix + "_struct.ma"),
-               inFileFrame(segmentation.getStructuredMat(), loaded.origin));
+               inFileFrame(orEmpty(segmentation.getStructuredMat()), loaded.origin));
   }
   if (boxes)
     writePartBoxes(outputs, prefix, labelled, segmentation.getLabels());
@@ -196,17 +179,21 @@ run(int argc, char** argv)
   seconds.emplace_back("write", write_seconds);
 
   if (common.json) {
-    std::printf("{\"parts\": %zu, \"point_counts\": %s, \"seconds\": %s, \"runs\": [%d, %d], "
+    std::printf("{\"parts\": %zu, \"point_counts\": %s, \"seconds\": %s, "
+                "\"noise\": {\"sigma\": %.9g, \"spacing\": %.9g, \"passes\": %d}, "
                 "\"origin\": [%.17g, %.17g, %.17g]}\n",
                 parts.size(), jsonSizes(parts).c_str(), jsonSeconds(seconds).c_str(),
-                segmentation.getConsensusRunsMade(), segmentation.getConsensusRunKept(),
-                loaded.origin.x(), loaded.origin.y(), loaded.origin.z());
+                segmentation.getEstimatedNoise(), segmentation.getEstimatedSpacing(),
+                segmentation.getDenoisingPasses(), loaded.origin.x(), loaded.origin.y(),
+                loaded.origin.z());
     return kExitOk;
   }
   printPartsText("point", parts, seconds);
-  if (segmentation.getConsensusRunsMade() > 1)
-    std::printf("\nruns: %d (noisy cloud; kept run %d, the consensus; seconds are summed)",
-                segmentation.getConsensusRunsMade(), segmentation.getConsensusRunKept());
+  if (segmentation.getDenoisingPasses() > 0)
+    std::printf("\nnoise: sigma %.3g, spacing %.3g (estimated; the points were smoothed %d "
+                "times)",
+                segmentation.getEstimatedNoise(), segmentation.getEstimatedSpacing(),
+                segmentation.getDenoisingPasses());
   if (!loaded.origin.isZero())
     std::printf("\norigin: %.17g %.17g %.17g (the file's points lie far from 0: segmented "
                 "relative to this point, written back in the file's frame)",

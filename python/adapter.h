@@ -140,10 +140,6 @@ cloudParameters()
                  [](S& s, double v) { s.setVisibilityFlag(v != 0.0); },
                  [](const S& s) { return s.getVisibilityFlag() ? 1.0 : 0.0; },
                  "test visibility before merging parts"});
-    t.push_back({"runs", ParameterKind::Whole, false, 1.0, 1e6,
-                 [](S& s, double v) { s.setConsensusRuns(static_cast<int>(v)); },
-                 [](const S& s) { return static_cast<double>(s.getConsensusRuns()); },
-                 "segmentations of a noisy cloud to keep the consensus of"});
     return t;
   }();
   return table;
@@ -156,8 +152,9 @@ struct RunInfo
   double cpp_seconds = 0.0; ///< wall time of the C++ segment() call
   bool mat_computed = false;
   std::size_t base_spheres = 0, structured_spheres = 0;
-  bool cloud = false; ///< runs_made and run_kept apply (the cloud path's consensus)
-  int runs_made = 1, run_kept = 0;
+  bool cloud = false;  ///< the cloud path (noise_spacing applies)
+  double noise_sigma = 0.0, noise_spacing = 0.0; ///< estimated, in the input's units
+  int denoising_passes = 0;
 };
 
 /** Mesh: one label per face. Fills what the mesh path reports. */
@@ -170,6 +167,8 @@ segment(segmat::MeshSegmentation& s, std::vector<int>& labels, RunInfo& info)
   info.mat_computed = s.hasComputedMats();
   info.base_spheres = s.getBaseMat() ? s.getBaseMat()->numVertices() : 0;
   info.structured_spheres = s.getStructuredMat() ? s.getStructuredMat()->numVertices() : 0;
+  info.noise_sigma = s.getEstimatedNoise();
+  info.denoising_passes = s.getDenoisingPasses();
   return true;
 }
 
@@ -183,11 +182,12 @@ segment(CloudSegmentation& s, std::vector<int>& labels, RunInfo& info)
   labels = s.getLabels();
   info.stage_seconds = s.getStageSeconds();
   info.mat_computed = true;
-  info.base_spheres = s.getBaseMat().numVertices();
-  info.structured_spheres = s.getStructuredMat().numVertices();
+  info.base_spheres = s.getBaseMat() ? s.getBaseMat()->numVertices() : 0;
+  info.structured_spheres = s.getStructuredMat() ? s.getStructuredMat()->numVertices() : 0;
   info.cloud = true;
-  info.runs_made = s.getConsensusRunsMade();
-  info.run_kept = s.getConsensusRunKept();
+  info.noise_sigma = s.getEstimatedNoise();
+  info.noise_spacing = s.getEstimatedSpacing();
+  info.denoising_passes = s.getDenoisingPasses();
   return true;
 }
 
@@ -218,8 +218,7 @@ medialMeshes(const segmat::MeshSegmentation& s)
 inline std::pair<segmat::MedialMesh::ConstPtr, segmat::MedialMesh::ConstPtr>
 medialMeshes(const CloudSegmentation& s)
 {
-  return {std::make_shared<segmat::MedialMesh>(s.getBaseMat()),
-          std::make_shared<segmat::MedialMesh>(s.getStructuredMat())};
+  return {s.getBaseMat(), s.getStructuredMat()};
 }
 
 } // namespace segmat_python

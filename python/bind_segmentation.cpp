@@ -226,9 +226,13 @@ public:
     d["mat_computations"] = mat_computations;
     d["base_spheres"] = last.base_spheres;
     d["structured_spheres"] = last.structured_spheres;
+    py::dict noise;
+    noise["sigma"] = last.noise_sigma;
     if (last.cloud)
-      d["runs"] = py::make_tuple(last.runs_made, last.run_kept);
-    else
+      noise["spacing"] = last.noise_spacing;
+    noise["passes"] = last.denoising_passes;
+    d["noise"] = noise;
+    if (!last.cloud)
       d["mat_computed"] = last.mat_computed;
     return std::move(d);
   }

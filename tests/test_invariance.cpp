@@ -2,9 +2,11 @@
 // shape changes its parts by at most the input's own rounding (Rand distance <= 0.01, the same
 // part count); a power-of-two scale changes no label at all.
 #include <segmat/io/off.h>
+#include <segmat/segmentation/cloud_segmentation.h>
 #include <segmat/segmentation/mesh_segmentation.h>
 
 #include "../bench/shape_variants.h"
+#include "util/cloud_sampler.h"
 #include "util/temp_files.h"
 
 #include <gtest/gtest.h>
@@ -35,7 +37,62 @@ segmentMesh(const TriangleMesh& mesh, bool principal_axes = false)
   return labels;
 }
 
+std::vector<int>
+segmentCloud(const std::vector<Eigen::Vector3d>& points)
+{
+  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  for (const Eigen::Vector3d& p : points)
+    cloud->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
+  CloudSegmentation<pcl::PointXYZ> seg;
+  seg.setNumberOfThreads(1);
+  seg.setInputCloud(cloud);
+  std::vector<pcl::PointIndices> parts;
+  EXPECT_TRUE(seg.segment(parts));
+  return seg.getLabels();
+}
+
 } // namespace
+
+// 20 000 points sampled from PSB 346, normals estimated: moved far away, scaled by 10^±3 or
+// rotated, the cloud keeps its parts; scaled by a power of two, every label.
+TEST(Invariance, CloudPartsSurviveMovingScalingAndRotating)
+{
+  const TriangleMesh mesh = io::loadOff(std::string(SEGMAT_DATA_DIR) + "/psb346/346.off");
+  const test::SampledCloud sampled = test::sampleMesh(mesh, 20000, 1);
+  std::vector<Eigen::Vector3d> points;
+  for (const Eigen::Vector3f& p : sampled.points)
+    points.push_back(p.cast<double>());
+  const std::vector<int> reference = segmentCloud(points);
+  ASSERT_GE(partCount(reference), 2);
+  const Eigen::Vector3d far = 1000.0 * mesh.boundingBoxDiagonal() * Eigen::Vector3d(1, -2, 3);
+  const Eigen::Matrix3d rotation = bench::someRotation();
+  struct Variant
+  {
+    std::string name;
+    std::function<Eigen::Vector3d(const Eigen::Vector3d&)> map;
+    bool identical;
+  };
+  const std::vector<Variant> variants{
+      {"translated", [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(p + far); }, false},
+      {"scale 1e3", [](const Eigen::Vector3d& p) { return Eigen::Vector3d(1e3 * p); }, false},
+      {"scale 1e-3", [](const Eigen::Vector3d& p) { return Eigen::Vector3d(1e-3 * p); }, false},
+      {"rotated", [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(rotation * p); }, false},
+      {"scale 2^-7", [](const Eigen::Vector3d& p) { return Eigen::Vector3d(std::ldexp(1.0, -7) * p); },
+       true},
+      {"scale 2^30", [](const Eigen::Vector3d& p) { return Eigen::Vector3d(std::ldexp(1.0, 30) * p); },
+       true}};
+  for (const Variant& v : variants) {
+    std::vector<Eigen::Vector3d> moved;
+    for (const Eigen::Vector3d& p : points)
+      moved.push_back(v.map(p));
+    const std::vector<int> labels = segmentCloud(moved);
+    const double distance = randDistance(labels, reference);
+    EXPECT_EQ(partCount(labels), partCount(reference)) << v.name;
+    EXPECT_LE(distance, 0.01) << v.name;
+    if (v.identical)
+      EXPECT_EQ(labels, reference) << v.name;
+  }
+}
 
 // PSB 346 (7 170 faces): every transformation keeps the parts.
 TEST(Invariance, MeshPartsSurviveMovingScalingRotatingReorderingAndFormats)

@@ -121,11 +121,10 @@ TEST(SegmatCloud, WritesPcdPlyLabelsAndPrintsJson)
   for (const char* stage : {"load", "preprocessing", "medial", "graph", "grow_merge", "transfer",
                             "labels", "write"})
     EXPECT_GE(json.get<double>(std::string("seconds.") + stage), 0.0) << stage;
-  // A clean cloud with its normals: one run (the consensus is for noisy clouds).
-  std::vector<int> runs;
-  for (const auto& c : json.get_child("runs"))
-    runs.push_back(c.second.get_value<int>());
-  EXPECT_EQ(runs, (std::vector<int>{1, 0}));
+  // The file's normals are used: the cloud is taken as it is, no noise is estimated.
+  EXPECT_EQ(json.get<double>("noise.sigma"), 0.0);
+  EXPECT_EQ(json.get<double>("noise.spacing"), 0.0);
+  EXPECT_EQ(json.get<int>("noise.passes"), 0);
 
   // Plain output, and the same labels again (deterministic), also with estimated normals.
   const test::ProgramRun plain =
@@ -133,10 +132,19 @@ TEST(SegmatCloud, WritesPcdPlyLabelsAndPrintsJson)
   ASSERT_EQ(plain.status, 0) << plain.err;
   EXPECT_NE(plain.out.find("parts: 3"), std::string::npos) << plain.out;
   EXPECT_EQ(io::loadSeg(prefix + "_plain.labels"), labels);
-  const test::ProgramRun estimated =
-      test::runProgram("segmat_cloud", input + " -o " + prefix + "_est --estimate-normals");
+  const test::ProgramRun estimated = test::runProgram(
+      "segmat_cloud", input + " -o " + prefix + "_est --estimate-normals --json");
   ASSERT_EQ(estimated.status, 0) << estimated.err;
-  EXPECT_NE(estimated.out.find("parts: 3"), std::string::npos) << estimated.out;
+  std::istringstream estimated_out(estimated.out);
+  boost::property_tree::ptree estimated_json;
+  boost::property_tree::read_json(estimated_out, estimated_json);
+  EXPECT_EQ(estimated_json.get<int>("parts"), 3);
+  // Estimated normals: the noise is measured; a clean sampling has noise well below its
+  // spacing and is not smoothed.
+  const double spacing = estimated_json.get<double>("noise.spacing");
+  EXPECT_GT(spacing, 0.0);
+  EXPECT_LT(estimated_json.get<double>("noise.sigma"), 0.1 * spacing);
+  EXPECT_EQ(estimated_json.get<int>("noise.passes"), 0);
 }
 
 TEST(SegmatCloud, BadArgumentsAndFilesFailWithAMessage)
@@ -153,9 +161,6 @@ TEST(SegmatCloud, BadArgumentsAndFilesFailWithAMessage)
   run = test::runProgram("segmat_cloud", "x.pcd -o " + prefix + " --max-bend 120");
   EXPECT_EQ(run.status, 2);
   EXPECT_NE(run.err.find("--max-bend"), std::string::npos) << run.err;
-  run = test::runProgram("segmat_cloud", "x.pcd -o " + prefix + " --boundary-merge -1");
-  EXPECT_EQ(run.status, 2);
-  EXPECT_NE(run.err.find("--boundary-merge"), std::string::npos) << run.err;
   run = test::runProgram("segmat_cloud", "x.pcd -o " + prefix + " --frobnicate");
   EXPECT_EQ(run.status, 2);
   // A missing file or an empty cloud is bad input (exit 2); an all-NaN cloud cannot be

@@ -1,5 +1,6 @@
 # The cloud path from Python against segmat_cloud on a cloud sampled from a psb-dev mesh.
 import numpy as np
+import pytest
 
 import segmat
 
@@ -13,7 +14,8 @@ def test_labels_equal_the_programs_on_a_psb_dev_cloud(psb_cloud):
     info = segmenter.info
     for key in ("parts", "point_counts"):
         assert info[key] == cli_info[key], key
-    assert list(info["runs"]) == cli_info["runs"]
+    for key in ("sigma", "spacing", "passes"):
+        assert info["noise"][key] == pytest.approx(cli_info["noise"][key], rel=1e-8), key
     assert list(info["seconds"]) == [k for k in cli_info["seconds"] if k not in ("load", "write")]
     assert info["parts"] > 1 and segmenter.base_mat[0].shape[1] == 3
 
@@ -25,9 +27,29 @@ def test_other_parameters_and_the_colours(psb_cloud):
     assert coarse.max() < cli_labels.max()
     # The parameters of one call do not stay for the next.
     np.testing.assert_array_equal(segmenter.segment(), cli_labels)
-    # The C++ cloud path has no medial-step cache: every call computes it.
-    assert segmenter.mat_computations == 2
+    # Only the first call computed the preprocessing, the medial axis and the graph.
+    assert segmenter.mat_computations == 1
     # segmat_cloud's PLY: "x y z r g b" per point.
     lines = (directory / "341.ply").read_text().splitlines()
     rgb = np.array([l.split()[3:6] for l in lines[lines.index("end_header") + 1:]], dtype=float)
     np.testing.assert_array_equal(np.rint(segmat.labels_to_colors(cli_labels) * 255), rgb)
+
+
+def test_segmenter_reuses_its_medial_axis(psb_cloud):
+    points, normals, cli_labels, _, _ = psb_cloud
+    segmenter = segmat.CloudSegmenter(points, normals)
+    segmenter.segment()
+    first = segmenter.info
+    assert first["seconds"]["medial"] > 0 and first["seconds"]["preprocessing"] > 0
+    base = segmenter.base_mat
+    labels = segmenter.segment(delta0=0.03, eta=0.004, omega=0.5, visibility=False)
+    again = segmenter.info
+    assert segmenter.mat_computations == 1
+    for stage in ("preprocessing", "medial", "graph"):
+        assert again["seconds"][stage] == 0, stage
+    np.testing.assert_array_equal(segmenter.base_mat[0], base[0])
+    # The same labels as a fresh segmenter with those parameters.
+    fresh = segmat.CloudSegmenter(points, normals)
+    np.testing.assert_array_equal(
+        labels, fresh.segment(delta0=0.03, eta=0.004, omega=0.5, visibility=False))
+    assert fresh.info["seconds"]["medial"] > 0

@@ -9,7 +9,6 @@
 #include <segmat/geometry/winding_number.h>
 
 #include "../common/point_kd_tree.h"
-#include "../common/splitmix.h"
 
 #include <pcl/console/print.h>
 
@@ -53,16 +52,6 @@ CloudMedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
     points->push_back(position);
     normals->push_back(normal.normalized());
     xyz->push_back(pcl::PointXYZ(p.x, p.y, p.z));
-  }
-  if (sample_order_seed_ != 0) {
-    // Fisher–Yates with splitmix64 draws: the same order everywhere.
-    const std::uint64_t stream = std::uint64_t(sample_order_seed_) << 32;
-    for (std::size_t i = points->size(); i-- > 1;) {
-      const std::size_t j = detail::splitmix64(stream + i) % (i + 1);
-      std::swap((*points)[i], (*points)[j]);
-      std::swap((*normals)[i], (*normals)[j]);
-      std::swap((*xyz)[i], (*xyz)[j]);
-    }
   }
   if (points->size() < 4) {
     PCL_ERROR("[segmat::CloudMedialMeshEstimation::compute] Only %zu points with a finite "

@@ -11,6 +11,7 @@
 #include "../common/point_kd_tree.h"
 #include "../common/thread_count.h"
 #include "local_fit.h"
+#include "preprocess_cloud.h"
 
 #include <pcl/console/print.h>
 
@@ -202,6 +203,8 @@ preprocessCloud(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, bool h
   stats.working_points = working.size();
   stats.normals_estimated = preprocessing.getNormalsEstimated();
   stats.smoothing_passes = preprocessing.getSmoothingPassesApplied();
+  stats.noise_sigma = preprocessing.getEstimatedNoise();
+  stats.spacing = preprocessing.getEstimatedSpacing();
   stats.seconds_preprocessing = secondsSince(start);
   return true;
 }

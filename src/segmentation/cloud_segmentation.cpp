@@ -7,20 +7,17 @@
 #include <segmat/medial/medial_point_graph.h>
 #include <segmat/medial/normal_orientation.h>
 #include <segmat/segmentation/cloud_segmentation.h>
-#include <segmat/segmentation/impl/cloud_segmentation.hpp>
 #include <segmat/segmentation/structure_tags.h>
 
-#include "../common/thread_count.h"
+#include "../geometry/normalized_frame.h"
+#include "cloud_segmentation_impl.hpp"
+#include "cloud_segmentation_steps.h"
 
-#include <pcl/common/io.h>
 #include <pcl/console/print.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cstdint>
 #include <numeric>
-#include <set>
-#include <stdexcept>
 
 namespace segmat {
 namespace detail {
@@ -38,35 +35,6 @@ addStageSeconds(const std::vector<std::pair<std::string, double>>& more,
     else
       mine->second += stage.second;
   }
-}
-
-/// Per run, the contingency of a labeling's parts (rows) with the run's labels (columns).
-struct ContingencyTable
-{
-  int width = 0;
-  std::vector<double> joint, rows;
-};
-
-std::vector<ContingencyTable>
-contingencyTables(const std::vector<std::vector<int>>& labelings, const std::vector<int>& labels,
-                  int count)
-{
-  std::vector<ContingencyTable> tables(labelings.size());
-  for (std::size_t r = 0; r < labelings.size(); ++r) {
-    const std::vector<int>& run = labelings[r];
-    const std::size_t n = std::min(run.size(), labels.size());
-    ContingencyTable& t = tables[r];
-    for (std::size_t i = 0; i < n; ++i)
-      t.width = std::max(t.width, run[i] + 1);
-    t.joint.assign(std::size_t(count) * t.width, 0.0);
-    t.rows.assign(count, 0.0);
-    for (std::size_t i = 0; i < n; ++i)
-      if (labels[i] >= 0 && run[i] >= 0) {
-        t.joint[std::size_t(labels[i]) * t.width + run[i]] += 1.0;
-        t.rows[labels[i]] += 1.0;
-      }
-  }
-  return tables;
 }
 
 } // namespace
@@ -215,324 +183,43 @@ segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
   return true;
 }
 
-double
-randDistance(const std::vector<int>& a, const std::vector<int>& b)
+CloudFrame
+moveToNormalizedFrame(pcl::PointCloud<pcl::PointNormal>& cloud)
 {
-  const std::size_t n = std::min(a.size(), b.size());
-  int labels_a = 0, labels_b = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    if (a[i] >= 0 && b[i] >= 0) {
-      labels_a = std::max(labels_a, a[i] + 1);
-      labels_b = std::max(labels_b, b[i] + 1);
-    }
-  std::vector<double> joint(std::size_t(labels_a) * labels_b, 0.0), count_a(labels_a, 0.0),
-      count_b(labels_b, 0.0);
-  double total = 0.0;
-  for (std::size_t i = 0; i < n; ++i)
-    if (a[i] >= 0 && b[i] >= 0) {
-      joint[std::size_t(a[i]) * labels_b + b[i]] += 1.0;
-      count_a[a[i]] += 1.0;
-      count_b[b[i]] += 1.0;
-      total += 1.0;
-    }
-  if (total < 2.0)
-    return 0.0;
-  // Pairs split by exactly one labeling: together in a + together in b − 2 · together in both.
-  auto pairs = [](double m) { return 0.5 * m * (m - 1.0); };
-  double split = 0.0;
-  for (double m : count_a)
-    split += pairs(m);
-  for (double m : count_b)
-    split += pairs(m);
-  for (double m : joint)
-    split -= 2.0 * pairs(m);
-  return split / pairs(total);
+  std::vector<Eigen::Vector3d> points(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    points[i] = cloud[i].getVector3fMap().cast<double>();
+  const NormalizedFrame normalized = NormalizedFrame::of(points);
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    cloud[i].getVector3fMap() = normalized.toFrame(points[i]).cast<float>();
+  CloudFrame frame;
+  frame.centre = normalized.centre;
+  frame.scale = normalized.scale;
+  return frame;
 }
 
-int
-consensusLabeling(const std::vector<std::vector<int>>& labelings)
+void
+moveFromNormalizedFrame(const CloudFrame& frame, const pcl::Indices& indices, MedialMesh& base,
+                        MedialMesh& structured, pcl::PointCloud<MedialPoint>& skeleton,
+                        MesoSkeletonStatistics& stats)
 {
-  const int count = static_cast<int>(labelings.size());
-  std::vector<double> summed(count, 0.0);
-  for (int i = 0; i < count; ++i)
-    for (int j = i + 1; j < count; ++j) {
-      const double d = randDistance(labelings[i], labelings[j]);
-      summed[i] += d;
-      summed[j] += d;
-    }
-  int best = count > 0 ? 0 : -1;
-  for (int i = 1; i < count; ++i)
-    if (summed[i] < summed[best])
-      best = i;
-  return best;
-}
-
-std::vector<int>
-mergeByConsensus(const std::vector<std::vector<int>>& labelings,
-                 const std::vector<std::pair<int, int>>& edges, double threshold,
-                 std::vector<int>& labels, bool keep_reproduced_cuts)
-{
-  int count = 0;
-  for (int l : labels)
-    count = std::max(count, l + 1);
-  std::vector<int> into(count);
-  std::iota(into.begin(), into.end(), 0);
-  if (labelings.empty() || count < 2)
-    return into;
-  // Merging two parts adds their rows, so the co-association of the merged part needs no pass
-  // over points.
-  std::vector<ContingencyTable> tables = contingencyTables(labelings, labels, count);
-  auto coAssociation = [&](int p, int q) {
-    double sum = 0.0;
-    for (const ContingencyTable& t : tables) {
-      if (!(t.rows[p] > 0.0) || !(t.rows[q] > 0.0))
-        continue;
-      double together = 0.0;
-      for (int l = 0; l < t.width; ++l)
-        together += t.joint[std::size_t(p) * t.width + l] * t.joint[std::size_t(q) * t.width + l];
-      sum += together / (t.rows[p] * t.rows[q]);
-    }
-    return sum / double(tables.size());
-  };
-  // A run cuts P from Q "alike" when each side is, to kCutPurity, one of its labels and the two
-  // labels differ: the run reproduces the cut, wherever else its own noise cuts fall.
-  constexpr double kCutPurity = 0.8;
-  auto dominant = [](const ContingencyTable& t, int p) {
-    int best = -1;
-    double most = 0.0;
-    for (int l = 0; l < t.width; ++l)
-      if (t.joint[std::size_t(p) * t.width + l] > most) {
-        most = t.joint[std::size_t(p) * t.width + l];
-        best = l;
-      }
-    return most >= kCutPurity * t.rows[p] ? best : -1;
-  };
-  auto reproduced = [&](int p, int q) {
-    int alike = 0;
-    for (const ContingencyTable& t : tables) {
-      if (!(t.rows[p] > 0.0) || !(t.rows[q] > 0.0))
-        continue;
-      const int a = dominant(t, p), b = dominant(t, q);
-      alike += a >= 0 && b >= 0 && a != b;
-    }
-    return 3 * alike >= int(tables.size());
-  };
-  std::set<std::pair<int, int>> adjacent;
-  for (const auto& [i, j] : edges) {
-    if (i < 0 || j < 0 || std::size_t(std::max(i, j)) >= labels.size())
-      continue;
-    const int p = labels[i], q = labels[j];
-    if (p >= 0 && q >= 0 && p != q)
-      adjacent.emplace(std::min(p, q), std::max(p, q));
+  NormalizedFrame normalized;
+  normalized.centre = frame.centre;
+  normalized.scale = frame.scale;
+  if (!base.empty())
+    base = normalized.fromFrame(base);
+  if (!structured.empty())
+    structured = normalized.fromFrame(structured);
+  for (MedialPoint& m : skeleton) {
+    m.getVector3fMap() = normalized.fromFrame(m.getVector3fMap().cast<double>()).cast<float>();
+    m.radius = static_cast<float>(m.radius / frame.scale);
+    if (m.surface_index >= 0)
+      m.surface_index = indices[m.surface_index];
+    if (m.contact_index >= 0)
+      m.contact_index = indices[m.contact_index];
   }
-  while (!adjacent.empty()) {
-    double best = -1.0;
-    std::pair<int, int> pair;
-    for (const auto& candidate : adjacent) {
-      const double c = coAssociation(candidate.first, candidate.second);
-      if (c > best && !(keep_reproduced_cuts && reproduced(candidate.first, candidate.second))) {
-        best = c;
-        pair = candidate;
-      }
-    }
-    if (!(best > threshold))
-      break;
-    const auto [p, q] = pair; // p < q: q goes into p
-    for (ContingencyTable& t : tables) {
-      for (int l = 0; l < t.width; ++l)
-        t.joint[std::size_t(p) * t.width + l] += t.joint[std::size_t(q) * t.width + l];
-      t.rows[p] += t.rows[q];
-      t.rows[q] = 0.0;
-    }
-    for (int& l : labels)
-      if (l == q)
-        l = p;
-    for (int& l : into)
-      if (l == q)
-        l = p;
-    std::set<std::pair<int, int>> renamed;
-    for (auto [a, b] : adjacent) {
-      a = a == q ? p : a;
-      b = b == q ? p : b;
-      if (a != b)
-        renamed.emplace(std::min(a, b), std::max(a, b));
-    }
-    adjacent.swap(renamed);
-  }
-  return into;
-}
-
-int
-voteByConsensus(const std::vector<std::vector<int>>& labelings,
-                const std::vector<std::pair<int, int>>& edges, std::vector<int>& labels)
-{
-  int count = 0;
-  for (int l : labels)
-    count = std::max(count, l + 1);
-  if (labelings.empty() || count < 2)
-    return 0;
-  const std::size_t n = labels.size();
-  // Candidates of each point besides its own part: the parts of its neighbours.
-  std::vector<std::vector<int>> candidates(n);
-  for (const auto& [a, b] : edges) {
-    if (a < 0 || b < 0 || std::size_t(std::max(a, b)) >= n || labels[a] < 0 || labels[b] < 0 ||
-        labels[a] == labels[b])
-      continue;
-    candidates[a].push_back(labels[b]);
-    candidates[b].push_back(labels[a]);
-  }
-  // The votes are taken against the parts as they were before any point moves, so the result
-  // does not depend on the order of the points.
-  const std::vector<ContingencyTable> tables = contingencyTables(labelings, labels, count);
-  std::vector<int> voted = labels;
-  int moved = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (labels[i] < 0 || candidates[i].empty())
-      continue;
-    std::vector<int>& parts = candidates[i];
-    std::sort(parts.begin(), parts.end());
-    parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
-    auto score = [&](int p) {
-      double sum = 0.0;
-      for (std::size_t r = 0; r < labelings.size(); ++r) {
-        const ContingencyTable& t = tables[r];
-        if (i >= labelings[r].size() || labelings[r][i] < 0 || !(t.rows[p] > 0.0))
-          continue;
-        sum += t.joint[std::size_t(p) * t.width + labelings[r][i]] / t.rows[p];
-      }
-      return sum;
-    };
-    int best = labels[i];
-    double best_score = score(best);
-    for (int p : parts) {
-      if (p == labels[i])
-        continue;
-      const double s = score(p);
-      if (s > best_score) { // a tie keeps the point's own part, else the lower
-        best_score = s;
-        best = p;
-      }
-    }
-    if (best != labels[i]) {
-      voted[i] = best;
-      ++moved;
-    }
-  }
-  labels.swap(voted);
-  return moved;
-}
-
-MedialMeshRunStatus
-segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs,
-                      double merge_threshold, bool keep_reproduced_cuts, bool retry,
-                      int orientation_k, int transfer_k, bool visibility, unsigned int threads,
-                      CloudMedialMeshEstimation& estimation, const MatRegionGrowing& grower,
-                      const CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
-                      std::vector<std::pair<std::string, double>>& stage_seconds)
-{
-  chosen = -1;
-  runs = std::max(1, runs);
-  const unsigned int own_seed = estimation.getSampleOrderSeed();
-  std::vector<MedialMeshRun> done(runs);
-  std::vector<MedialMeshRunStatus> status(runs, MedialMeshRunStatus::Failed);
-  std::vector<std::vector<std::pair<std::string, double>>> seconds(runs);
-  // Each run's estimation is kept: the kept one goes back to the caller (statistics, splats).
-  std::vector<CloudMedialMeshEstimation> estimations(runs, estimation);
-  // The runs are independent, each with its own copies of the stages (their parameters), so
-  // they may run side by side; each run's result does not depend on which thread made it.
-  // Steps inside a run then get one thread (OpenMP does not nest by default).
-#pragma omp parallel for schedule(dynamic, 1) num_threads(std::min(threadCount(threads), runs))
-  for (int run = 0; run < runs; ++run) {
-    try {
-      MedialMeshRun& r = done[run];
-      CloudMedialMeshEstimation& run_estimation = estimations[run];
-      MatRegionGrowing run_grower = grower;
-      CloudLabelTransfer run_transfer = transfer;
-      r.working.reset(new pcl::PointCloud<pcl::PointNormal>(working));
-      // Run 0 keeps the caller's order, so one run is exactly the plain pipeline.
-      run_estimation.setSampleOrderSeed(own_seed + static_cast<unsigned int>(run));
-      if (!medialMeshGraph(r.working, run_estimation, r.base, r.structured, r.graph, r.tags,
-                           seconds[run])) {
-        status[run] = MedialMeshRunStatus::NoMedialAxis;
-        continue;
-      }
-      if (retry)
-        retryFragmentedWithMirrorNormals(r.working, orientation_k, run_estimation, r.base,
-                                         r.structured, r.graph, r.tags, seconds[run]);
-      if (segmentWorkingCloud(r.graph, r.tags, *r.working, transfer_k, visibility, run_grower,
-                              run_transfer, r.working_labels, r.label_parts, r.parts,
-                              seconds[run]))
-        status[run] = MedialMeshRunStatus::Segmented;
-    }
-    catch (const std::exception& e) { // out of memory, most likely: the run is lost, not the process
-      PCL_ERROR("[segmat::CloudSegmentation::segment] Run %d failed: %s\n", run, e.what());
-    }
-  }
-  for (const auto& run_seconds : seconds)
-    addStageSeconds(run_seconds, stage_seconds);
-  // Run 0 is the plain pipeline: its outcome stands for the cloud; a later run that fails is
-  // another thinning of the same cloud and is left out.
-  if (status[0] != MedialMeshRunStatus::Segmented) {
-    estimation = std::move(estimations[0]);
-    estimation.setSampleOrderSeed(own_seed);
-    return status[0];
-  }
-  std::vector<std::vector<int>> labelings;
-  std::vector<int> run_of; // run number of each labeling
-  for (int run = 0; run < runs; ++run)
-    if (status[run] == MedialMeshRunStatus::Segmented) {
-      labelings.push_back(std::move(done[run].working_labels));
-      run_of.push_back(run);
-    }
-  // Each run's parts that the runs join are merged first (mergeByConsensus), so the medoid is
-  // chosen among labelings whose noise cuts are gone: it then weighs where the runs differ in
-  // structure, not in where the foam happened to cut.
-  std::vector<std::vector<int>> merged = labelings;
-  std::vector<std::vector<int>> merged_into(labelings.size());
-  // The points' adjacency (for the parts' adjacency of the merge and the vote's candidates):
-  // the transfer's graph of the working points (symmetric k-NN; its weights are not needed).
-  std::vector<std::pair<int, int>> edges;
-  if (labelings.size() > 1) {
-    pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
-    pcl::copyPointCloud(working, *xyz);
-    std::vector<int> nodes(xyz->size());
-    std::iota(nodes.begin(), nodes.end(), 0);
-    for (const PottsEdge& e : computeCloudSmoothnessEdges(xyz, nullptr, nodes, transfer_k, 0.0,
-                                                           CreaseModel::Reference, threads))
-      edges.emplace_back(e.a, e.b);
-  }
-  if (labelings.size() > 1 && merge_threshold <= 1.0) {
-    for (std::size_t r = 0; r < merged.size(); ++r)
-      merged_into[r] = mergeByConsensus(labelings, edges, merge_threshold, merged[r]);
-  }
-  const int kept = consensusLabeling(merged);
-  chosen = run_of[kept];
-  estimation = std::move(estimations[chosen]);
-  estimation.setSampleOrderSeed(own_seed);
-  result = std::move(done[chosen]);
-  // The medoid is chosen among the plainly merged runs; the kept run is then merged again
-  // keeping the cuts that a third of the runs reproduce (with them kept before the choice, the
-  // majority of runs that miss such a cut would tend to be the closer to each other).
-  if (keep_reproduced_cuts && labelings.size() > 1 && merge_threshold <= 1.0) {
-    merged[kept] = labelings[kept];
-    merged_into[kept] = mergeByConsensus(labelings, edges, merge_threshold, merged[kept], true);
-  }
-  result.working_labels = std::move(merged[kept]);
-  // The kept run's boundaries are one run's; each point then joins the part the runs put it with
-  // most often.
-  if (labelings.size() > 1)
-    voteByConsensus(labelings, edges, result.working_labels);
-  // A merged label's MAT nodes join those of the label it went into.
-  const std::vector<int>& into = merged_into[kept];
-  for (std::size_t l = 0; l < into.size() && l < result.label_parts.size(); ++l) {
-    if (into[l] == static_cast<int>(l))
-      continue;
-    auto& from = result.parts[result.label_parts[l]].indices;
-    auto& to = result.parts[result.label_parts[into[l]]].indices;
-    to.insert(to.end(), from.begin(), from.end());
-    from.clear();
-  }
-  return MedialMeshRunStatus::Segmented;
+  stats.noise_sigma /= frame.scale;
+  stats.spacing /= frame.scale;
 }
 
 void

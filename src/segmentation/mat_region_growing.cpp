@@ -265,7 +265,7 @@ graphEdgePairs(const MatGraph& g, const std::vector<Patch>& patches)
  */
 void
 mergePatches(const MatGraph& g, const RadiusBinning& binning, int rounds,
-             const SegmentVisibility& visibility, double shared_boundary_factor, unsigned seed,
+             const SegmentVisibility& visibility, unsigned seed,
              std::vector<Patch>& patches)
 {
   double emd_max = 0.0;
@@ -282,7 +282,7 @@ mergePatches(const MatGraph& g, const RadiusBinning& binning, int rounds,
     const std::vector<int> group =
         mergeRoundGroups(spheres, hist, binning.spacing, g.centers(), g.radii(),
                          settings.emd_factor * emd_max, settings.visibility_ratio, visibility,
-                         seed, round, graphEdgePairs(g, patches), shared_boundary_factor);
+                         seed, round, graphEdgePairs(g, patches));
     std::vector<Patch> merged(*std::max_element(group.begin(), group.end()) + 1);
     for (std::size_t p = 0; p < patches.size(); ++p) {
       Patch& into = merged[group[p]];
@@ -304,7 +304,6 @@ MatRegionGrowing::MatRegionGrowing()
 , merge_rounds_(3)
 , max_seed_radius_ratio_(3.0)
 , max_bend_angle_(60.0)
-, shared_boundary_factor_(0.0)
 , seed_(0x5e6a7u)
 {}
 
@@ -361,13 +360,6 @@ MatRegionGrowing::setMaxSeedRadiusRatio(double ratio)
   detail::assignChecked(max_seed_radius_ratio_, ratio, ratio >= 1.0,
                         "MatRegionGrowing::setMaxSeedRadiusRatio",
                         ">= 1 (infinity disables the guard)");
-}
-
-void
-MatRegionGrowing::setSharedBoundaryMergeFactor(double factor)
-{
-  detail::assignChecked(shared_boundary_factor_, factor, factor >= 0.0,
-                        "MatRegionGrowing::setSharedBoundaryMergeFactor", ">= 0 (0: off)");
 }
 
 void
@@ -553,7 +545,7 @@ MatRegionGrowing::extract(std::vector<pcl::PointIndices>& parts)
   // parts and is split.
   splitLargeLeftovers(g, tiny, patches, std::max<std::size_t>(2, g.numNodes() / 20));
   absorbTinyPatches(g, tiny, binning, index, patches);
-  mergePatches(g, binning, merge_rounds_, visibility_, shared_boundary_factor_, seed_, patches);
+  mergePatches(g, binning, merge_rounds_, visibility_, seed_, patches);
 
   // Outputs, in patch order.
   node_labels_.assign(n, -1);

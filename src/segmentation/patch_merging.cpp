@@ -13,11 +13,6 @@
 namespace segmat {
 namespace {
 
-/// Shortest box diagonal, in median radii, of the spheres that two patches share for the
-/// long-boundary merge: a joint between two limbs shares a short, round set of spheres, while a
-/// part that noise cut in two shares a long one.
-constexpr double kMinSpanInRadii = 8.0;
-
 /** Uniform double in [0, 1) from two raw 32-bit outputs (53 bits, library-independent). */
 double
 uniform01(std::mt19937& engine)
@@ -186,64 +181,25 @@ mergeRoundGroups(const std::vector<std::vector<int>>& patch_spheres,
                  const std::vector<Eigen::Vector3d>& centers, const std::vector<double>& radii,
                  double emd_limit, double visibility_ratio, const SegmentVisibility& visible,
                  std::uint32_t seed, int round,
-                 const std::vector<std::pair<int, int>>& extra_pairs,
-                 double shared_boundary_factor)
+                 const std::vector<std::pair<int, int>>& extra_pairs)
 {
   const int n = static_cast<int>(patch_spheres.size());
   std::vector<int> rank(n, 0), parent(n);
   for (int i = 0; i < n; ++i)
     parent[i] = i;
   boost::disjoint_sets<int*, int*> sets(rank.data(), parent.data());
-  std::vector<int> shared_counts;
-  const std::vector<std::pair<int, int>> sharing =
-      sphereSharingPairs(patch_spheres, centers.size(), &shared_counts);
-  std::vector<std::pair<int, int>> pairs = sharing;
+  std::vector<std::pair<int, int>> pairs = sphereSharingPairs(patch_spheres, centers.size());
   if (!extra_pairs.empty()) {
     pairs.insert(pairs.end(), extra_pairs.begin(), extra_pairs.end());
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   }
-  // A sheet cut by noise shares a line of spheres along its cut, ~√(spheres) of the smaller
-  // piece or more; a limb bent at a joint shares a ring, far fewer relative to its size.
-  std::vector<int> common;
-  std::vector<double> common_radii;
-  auto longBoundary = [&](int a, int b) {
-    if (!(shared_boundary_factor > 0.0))
-      return false;
-    const auto it = std::lower_bound(sharing.begin(), sharing.end(), std::make_pair(a, b));
-    if (it == sharing.end() || *it != std::make_pair(a, b))
-      return false;
-    const double smaller = static_cast<double>(
-        std::min(patch_spheres[a].size(), patch_spheres[b].size()));
-    if (shared_counts[it - sharing.begin()] < shared_boundary_factor * std::sqrt(smaller))
-      return false;
-    // ... and a cut spans many sheet thicknesses, while the shared spheres of a joint stay
-    // within a few radii of each other.
-    common.clear();
-    std::set_intersection(patch_spheres[a].begin(), patch_spheres[a].end(),
-                          patch_spheres[b].begin(), patch_spheres[b].end(),
-                          std::back_inserter(common));
-    common_radii.clear();
-    Eigen::Vector3d lo = centers[common.front()], hi = lo;
-    for (int c : common) {
-      lo = lo.cwiseMin(centers[c]);
-      hi = hi.cwiseMax(centers[c]);
-      common_radii.push_back(radii[c]);
-    }
-    auto middle = common_radii.begin() + common_radii.size() / 2;
-    std::nth_element(common_radii.begin(), middle, common_radii.end());
-    return (hi - lo).norm() >= kMinSpanInRadii * *middle;
-  };
   for (const auto& [a, b] : pairs) {
     // Cheap test first: the visibility test costs up to (|a|/3)·(|b|/3) segment queries.
     if (!(histogramEmd(histograms[a], histograms[b], spacing) < emd_limit))
       continue;
     if (sets.find_set(a) == sets.find_set(b))
       continue; // already joined: the visibility of this pair cannot change the groups
-    if (longBoundary(a, b)) {
-      sets.union_set(a, b);
-      continue;
-    }
     std::seed_seq mix{seed, static_cast<std::uint32_t>(round), static_cast<std::uint32_t>(a),
                       static_cast<std::uint32_t>(b)};
     std::uint32_t pair_seed;

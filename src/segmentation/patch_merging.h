@@ -107,11 +107,6 @@ defaultMergeRounds();
  * \param[in] round round number, only mixed into the seed
  * \param[in] extra_pairs further adjacent patch pairs (first < second), e.g. patches joined by a
  *            MAT-graph edge: medial points of a cloud have one sphere each and never share one
- * \param[in] shared_boundary_factor κ > 0: two patches sharing at least κ·√(spheres of the
- *            smaller one) spheres join without the visibility test (EMD still applies) — the
- *            long common boundary of a sheet that noise cut — provided the shared spheres'
- *            box diagonal spans at least 8 of their median radii (a cut is long, the shared
- *            ring of a joint stays within a few radii); 0 (default): off, as the reference
  * \return the group of each patch; groups are numbered in order of their lowest patch, so group
  *         k's lowest patch comes before group k+1's
  */
@@ -121,7 +116,6 @@ mergeRoundGroups(const std::vector<std::vector<int>>& patch_spheres,
                  const std::vector<Eigen::Vector3d>& centers, const std::vector<double>& radii,
                  double emd_limit, double visibility_ratio, const SegmentVisibility& visible,
                  std::uint32_t seed, int round,
-                 const std::vector<std::pair<int, int>>& extra_pairs = {},
-                 double shared_boundary_factor = 0.0);
+                 const std::vector<std::pair<int, int>>& extra_pairs = {});
 
 } // namespace segmat

@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include "cloud_sampler.h"
+#include "../../bench/shape_variants.h"
 
 #include <segmat/segmentation/cloud_segmentation.h>
 
@@ -258,7 +259,7 @@ randIndexError(const std::vector<int>& a, const std::vector<int>& b)
 {
   if (b.size() != a.size())
     throw std::invalid_argument("randIndexError: labelings of different sizes");
-  return detail::randDistance(a, b);
+  return bench::randDistance(a, b);
 }
 
 } // namespace test

@@ -85,8 +85,8 @@ void
 addGaussianNoise(TriangleMesh& mesh, double fraction, std::uint32_t seed = 2);
 
 /** \brief 1 − Rand index of two labelings of the same points, over point pairs with the
- * textbook divisor n(n−1)/2 (segmat::detail::randDistance: points labelled < 0 in either are
- * left out); 0 for fewer than two points; throws std::invalid_argument when the sizes differ.
+ * textbook divisor n(n−1)/2 (bench::randDistance: points labelled < 0 in either are left
+ * out); 0 for fewer than two points; throws std::invalid_argument when the sizes differ.
  */
 double
 randIndexError(const std::vector<int>& a, const std::vector<int>& b);

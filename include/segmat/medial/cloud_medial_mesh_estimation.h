@@ -73,23 +73,6 @@ public:
     return area_k_;
   }
 
-  /** \brief Order in which the points are offered to the Voronoi step's thinning (which keeps
-   * a point unless an earlier one is too close): 0 (default) the cloud's order, any other seed a
-   * fixed pseudo-random order — an equally dense but different subset of samples, so a
-   * different sample of the noise's medial foam (CloudSegmentation's consensus runs). */
-  void
-  setSampleOrderSeed(unsigned int seed)
-  {
-    sample_order_seed_ = seed;
-  }
-
-  /** \brief Order of the points offered to the Voronoi step's thinning (0: the cloud's). */
-  unsigned int
-  getSampleOrderSeed() const
-  {
-    return sample_order_seed_;
-  }
-
   /** \brief The underlying mesh-path estimation, for its targets, sample limit and threads
    * (setBaseTarget, setStructuredTarget, setMaxSampleCount, setNumberOfThreads, ...). Its input
    * mesh, samples and winding number are set by compute(). */
@@ -132,7 +115,6 @@ public:
 private:
   pcl::PointCloud<pcl::PointNormal>::ConstPtr cloud_;
   int area_k_ = 8;
-  unsigned int sample_order_seed_ = 0;
   MedialMeshEstimation estimation_;
   TriangleMesh::Ptr splats_ = std::make_shared<TriangleMesh>();
 };

@@ -57,30 +57,14 @@ struct MesoSkeletonStatistics
   std::size_t medial_points = 0;    ///< output size
   bool normals_estimated = false;   ///< normals were estimated (not read from the cloud)
   int smoothing_passes = 0;         ///< smoothing passes applied (> 0: the cloud was noisy)
+  double noise_sigma = 0;           ///< estimated noise σ (CloudPreprocessing::getEstimatedNoise)
+  double spacing = 0;               ///< estimated spacing (CloudPreprocessing::getEstimatedSpacing)
   double seconds_preprocessing = 0; ///< resampling, normals, orientation
   double seconds_balls = 0;         ///< shrinking balls
   double seconds_medial = 0;        ///< filters, contraction, reduction, radii, normals
 };
 
 namespace detail {
-
-/** \brief Step 1 of the meso-skeleton, also the cloud path's pre-processing when it builds a
- * medial mesh instead: segmat::CloudPreprocessing with \a params' working size, normal and
- * orientation neighbours, smoothing and threads.
- * \param[in] cloud the points (non-finite ones are skipped)
- * \param[in] has_normals whether \a cloud's normal fields hold normals to keep
- * \param[in] params the parameters
- * \param[out] working the resampled cloud with unit outward normals
- * \param[out] working_indices for each working point, its index in \a cloud
- * \param[out] input_to_working for each point of \a cloud, its working point (-1: none)
- * \param[in,out] stats working_points, normals_estimated and seconds_preprocessing are set
- * \return false (PCL_ERROR) when no working cloud can be made
- */
-bool
-preprocessCloud(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, bool has_normals,
-                const MesoSkeletonParameters& params, pcl::PointCloud<pcl::PointNormal>& working,
-                std::vector<int>& working_indices, std::vector<int>& input_to_working,
-                MesoSkeletonStatistics& stats);
 
 /** \brief The input-to-working map of a cloud that was copied from \a indices of the input.
  * \param[in] input_size points in the input cloud

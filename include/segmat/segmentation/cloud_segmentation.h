@@ -8,8 +8,8 @@
 #include <segmat/geometry/medial_mesh.h>
 #include <segmat/medial/cloud_medial_mesh_estimation.h>
 #include <segmat/medial/meso_skeleton_estimation.h>
-#include <segmat/segmentation/label_transfer.h>
 #include <segmat/medial/mat_graph.h>
+#include <segmat/segmentation/label_transfer.h>
 #include <segmat/segmentation/mat_region_growing.h>
 #include <segmat/segmentation/mat_segmentation_parameters.h>
 #include <segmat/segmentation/structure_tags.h>
@@ -38,190 +38,31 @@ enum class CloudMedialAxis
   MesoSkeleton
 };
 
-namespace detail {
-
-/** \brief The MAT graph of a meso-skeleton: segmat::MedialPointGraph with k neighbours.
- * \return false (PCL_ERROR) when it cannot be built */
-bool
-medialPointGraph(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton, int k, MatGraph::Ptr& graph);
-
-/** \brief The medial mesh of the working cloud and its MAT graph and structure tags (as on
- * meshes). Appends "medial" and "graph" to \a stage_seconds.
- * \return false when the estimation fails (it said why) or the base MAT gives no graph node */
-bool
-medialMeshGraph(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& working,
-                CloudMedialMeshEstimation& estimation, MedialMesh& base, MedialMesh& structured,
-                MatGraph::Ptr& graph, StructureTags& tags,
-                std::vector<std::pair<std::string, double>>& stage_seconds);
-
-/** \brief When the base MAT computed from estimated normals falls apart (more than 8
- * components), orient \a working's normals again with the mirror relation
- * (NormalOrientation::setMirrorRelationFlag) and keep that medial mesh when it has at most 3/4
- * of the components. \a working, the medial meshes, \a graph and \a tags are replaced when the
- * retry is kept; its seconds are added to "medial" and "graph" either way.
- * \return true when the retry was kept */
-bool
-retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working, int orientation_k,
-                                 CloudMedialMeshEstimation& estimation, MedialMesh& base,
-                                 MedialMesh& structured, MatGraph::Ptr& graph, StructureTags& tags,
-                                 std::vector<std::pair<std::string, double>>& stage_seconds);
-
-/** \brief What CloudSegmentation does once the MAT graph exists (untyped core).
- * \param[in] graph the MAT graph (medial mesh or meso-skeleton)
- * \param[in] tags its structure tags (empty: every node bulky)
- * \param[in] working the working cloud with oriented normals the medial axis came from
- * \param[in] transfer_k neighbours of the working cloud's graph in the transfer
- * \param[in] visibility use the ball-union visibility when merging parts
- * \param[in,out] grower the grower, parameters set (its graph and visibility are set here)
- * \param[in,out] transfer the transfer, ω set (its inputs are set here)
- * \param[out] working_labels one label per working point, in growing order (compacted)
- * \param[out] label_parts for each label, the index of its part in \a parts
- * \param[out] parts the grower's parts (MAT-graph nodes)
- * \param[in,out] stage_seconds "grow_merge", "transfer" are appended
- * \return false (PCL_ERROR) when a stage fails
- */
-bool
-segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
-                    const pcl::PointCloud<pcl::PointNormal>& working, int transfer_k,
-                    bool visibility, MatRegionGrowing& grower, CloudLabelTransfer& transfer,
-                    std::vector<int>& working_labels, std::vector<int>& label_parts,
-                    std::vector<pcl::PointIndices>& parts,
-                    std::vector<std::pair<std::string, double>>& stage_seconds);
-
-/** \brief 1 − Rand index of two labelings of the same points (the share of point pairs that
- * one puts together and the other apart); entries < 0 in either are skipped. O(n + L_a·L_b).
- * 0 for identical partitions, whatever the label numbers. */
-double
-randDistance(const std::vector<int>& a, const std::vector<int>& b);
-
-/** \brief The consensus of several labelings of the same points: the one with the least summed
- * randDistance() to the others (their medoid, as in cluster ensembles; Strehl & Ghosh, "Cluster
- * ensembles", JMLR 2002). Ties go to the lower index; -1 when \a labelings is empty. */
-int
-consensusLabeling(const std::vector<std::vector<int>>& labelings);
-
-/** \brief Merges, in \a labels, the adjacent parts that the runs put together: while some pair
- * of parts (P, Q) joined by an edge has a mean co-association above \a threshold — the share of
- * the point pairs p ∈ P, q ∈ Q that a labeling gives one label, averaged over \a labelings —
- * the pair with the highest is merged (average linkage, so a chain of weak links does not join
- * parts, unlike single linkage). A noise-made cut falls in a different place in each run, so
- * most runs join its two sides; a real boundary is cut by all. Ties: the lower pair first.
- * \param[in] labelings the runs' labelings of the same points (labels >= 0; < 0 skipped)
- * \param[in] edges point pairs that are neighbours (the adjacency of parts)
- * \param[in,out] labels the labeling to merge (one of the runs'); a merged part takes the lower
- * label
- * \param[in] keep_reproduced_cuts when true, a pair that at least a third of \a labelings cut
- * alike (each side at least 80 % one label of the run, the two labels different) is never
- * merged, however often the other runs join it: a real boundary that the noise lets only some
- * runs find (the seat and back of a noisy chair, PSB 101) is reproduced where it is found,
- * while a noise cut falls somewhere else in each run
- * \return per label of the input \a labels, the label it ended in */
-std::vector<int>
-mergeByConsensus(const std::vector<std::vector<int>>& labelings,
-                 const std::vector<std::pair<int, int>>& edges, double threshold,
-                 std::vector<int>& labels, bool keep_reproduced_cuts = false);
-
-/** \brief Moves each point of \a labels to the part the runs put it with most often, among its
- * own part and the parts of its neighbours: the part P with the highest
- * Σ_r |{q ∈ P : run r labels q as it labels the point}| / |P| — the point's mean
- * co-association with P over \a labelings (ties keep the point's part). The kept run's
- * boundaries are where its own thinning of the samples put them; the vote moves them to where
- * the runs agree. Parts are taken as they were before any point moved (one pass, independent of
- * the point order); a part is never created, only emptied.
- *
- * Only a neighbour's part is a candidate because the score favours a small part that other runs
- * hold inside a larger one: every point of that larger part then scores ~1 for the small part.
- * Without the restriction, points all over a noisy box (a box with a smaller box on top) would
- * join a small corner part that the other runs hold inside the box's part.
- * \param[in] labelings the runs' labelings of the same points (labels >= 0; < 0 skipped)
- * \param[in] edges point pairs that are neighbours (the k-NN graph of the transfer)
- * \param[in,out] labels the labeling to refine (one of the runs', after mergeByConsensus())
- * \return the number of points moved */
-int
-voteByConsensus(const std::vector<std::vector<int>>& labelings,
-                const std::vector<std::pair<int, int>>& edges, std::vector<int>& labels);
-
-/** \brief One segmentation of the working cloud through its medial mesh. */
-struct MedialMeshRun
-{
-  pcl::PointCloud<pcl::PointNormal>::Ptr working; ///< with the normals the run used
-  MedialMesh base, structured;
-  MatGraph::Ptr graph;
-  StructureTags tags;
-  std::vector<int> working_labels, label_parts; ///< as segmentWorkingCloud()
-  std::vector<pcl::PointIndices> parts;         ///< as segmentWorkingCloud()
-};
-
-/** \brief How segmentWithMedialMesh() ended. */
-enum class MedialMeshRunStatus
-{
-  Segmented,     ///< \a result holds the chosen run
-  NoMedialAxis,  ///< the first run found no medial axis (one part, for the caller)
-  Failed         ///< a later stage failed (PCL_ERROR said which)
-};
-
-/** \brief The medial-mesh branch of CloudSegmentation::segment(): medial mesh, graph and tags
- * (with the mirror-normal retry when \a retry), growing and transfer — \a runs times with the
- * Voronoi samples thinned in different orders (run r: sample order seed = \a estimation's + r,
- * so run 0 is the plain pipeline). Each run's working labels are merged by mergeByConsensus()
- * over all the runs (above \a merge_threshold; > 1: no merging), the consensusLabeling() of
- * the merged labelings is kept (when \a keep_reproduced_cuts, merged again from its own labels
- * keeping the cuts a third of the runs reproduce), and its points are moved by
- * voteByConsensus().
- * Each run works on its own copies of \a working and of the three stages; up to \a threads
- * runs go side by side (0: OpenMP's choice; the result does not depend on it). Stage seconds are summed over the
- * runs. Run 0 decides the outcome; a later run that fails is left out. \a estimation ends up
- * as the kept run's (its statistics and splat surface; its own sample order seed).
- * \param[out] chosen the run kept */
-MedialMeshRunStatus
-segmentWithMedialMesh(const pcl::PointCloud<pcl::PointNormal>& working, int runs,
-                      double merge_threshold, bool keep_reproduced_cuts, bool retry,
-                      int orientation_k, int transfer_k, bool visibility, unsigned int threads,
-                      CloudMedialMeshEstimation& estimation, const MatRegionGrowing& grower,
-                      const CloudLabelTransfer& transfer, MedialMeshRun& result, int& chosen,
-                      std::vector<std::pair<std::string, double>>& stage_seconds);
-
-/** \brief Input labels from working labels, renumbered by descending point count (ties: the
- * lower label first); parts[l] lists the input points of label l, ascending.
- * \param[in] input_to_working per input point, its working point (-1: no label)
- * \param[in] working_labels per working point, its label
- * \param[out] labels per input point (-1 where input_to_working is -1)
- * \param[out] parts per final label, its input points
- * \param[out] rank per working label, its final label
- */
-void
-labelInputPoints(const std::vector<int>& input_to_working, const std::vector<int>& working_labels,
-                 std::vector<int>& labels, std::vector<pcl::PointIndices>& parts,
-                 std::vector<int>& rank);
-
-} // namespace detail
 
 /** \brief End-to-end part segmentation of a point cloud with SEG-MAT (Lin et al., "SEG-MAT: 3D
  * Shape Segmentation Using Medial Axis Transform", IEEE TVCG 2022, §6: point clouds).
  *
  * Stages, each timed (getStageSeconds()):
  *  1. "preprocessing": finite points, resampled to the working size (~20k), normals (the
- *     cloud's own, or PCA + MST orientation) — segmat::CloudPreprocessing;
- *  2. "medial": shrinking balls, filters, contraction, reduction to ~2000 medial points —
- *     segmat::MesoSkeletonEstimation;
- *  3. "graph": the MAT graph of the medial points — segmat::MedialPointGraph;
- *  4. "grow_merge": the mesh path's grower, unchanged (segmat::MatRegionGrowing: growing,
- *     swallowing, tiny patches); with point nodes its cost is C_r + α·C_θ (no medial
- *     primitives: C_mp drops out). No structured MAT exists for a cloud, so every node is bulky
- *     (tag 0). Then SEG-MAT's three merging rounds with the grower's own pieces, but with
- *     patches adjacent when a graph edge joins them (the grower asks for a shared sphere, which
- *     point nodes never have; see src/segmentation/cloud_segmentation.cpp). Merging tests
- *     visibility against the union of the medial balls (segmat::BallUnionVisibility;
- *     setVisibilityFlag);
+ *     cloud's own, or PCA + MST orientation). Without normals the noise and the spacing are
+ *     estimated and a noisy cloud is smoothed first (getEstimatedNoise(), getDenoisingPasses();
+ *     docs/noise.md): a noisy cloud needs no parameter — segmat::CloudPreprocessing;
+ *  2. "medial": with CloudMedialAxis::MedialMesh (the default) the Voronoi medial mesh of the
+ *     working points, simplified by Q-MAT to a base and a structured MAT, as on meshes
+ *     (segmat::CloudMedialMeshEstimation; when estimated normals leave the base MAT in many
+ *     pieces, the normals are oriented again with the mirror relation and the less fragmented
+ *     axis is kept); with CloudMedialAxis::MesoSkeleton shrinking balls reduced to ~2000 medial
+ *     points (segmat::MesoSkeletonEstimation);
+ *  3. "graph": the MAT graph (MatGraph::fromMedialMesh and the structure tags, or
+ *     segmat::MedialPointGraph);
+ *  4. "grow_merge": the mesh path's grower (segmat::MatRegionGrowing: growing, swallowing,
+ *     tiny patches, SEG-MAT's three merging rounds with the visibility test against the union
+ *     of the medial balls, setVisibilityFlag). Medial points have no primitives, so on the
+ *     meso-skeleton the cost is C_r + α·C_θ and every node is bulky;
  *  5. "transfer": α-expansion on the working cloud's k-NN graph (segmat::CloudLabelTransfer,
  *     data term = distance to each part's balls, crease-aware smoothness from the oriented
  *     normals; two cycles, as the reference); every input point then takes the label of the
  *     working point standing for it (its voxel's representative): "labels".
- * With the medial mesh (the default axis, CloudMedialAxis::MedialMesh), a cloud that the
- * preprocessing finds noisy goes through stages 2–5 several times with differently thinned
- * Voronoi samples, and the consensus run is kept (setConsensusRuns); its grower also merges
- * patches that share a long boundary without the visibility test
- * (setNoisyBoundaryMergeFactor).
  * Parts are numbered by descending point count. A cloud that encloses no volume (a flat patch,
  * a handful of points) is one part, with a warning.
  *
@@ -229,16 +70,26 @@ labelInputPoints(const std::vector<int>& input_to_working, const std::vector<int
  * pcl::PointCloud<pcl::PointNormal>::Ptr cloud = ...;   // or PointXYZ: normals are estimated
  * segmat::CloudSegmentation<pcl::PointNormal> seg;
  * seg.setInputCloud(cloud);
- * std::vector<pcl::PointIndices> parts;
- * if (seg.segment(parts)) {
- *   const std::vector<int>& labels = seg.getLabels();  // one per input point
+ * std::vector<int> labels;                             // one per input point
+ * if (seg.segment(labels)) {                            // or segment(parts): PointIndices
  *   pcl::PointCloud<pcl::PointXYZL> labelled;
  *   seg.getLabeledCloud(labelled);
  * }
  * \endcode
  *
- * PointT: any PCL type with xyz (instantiated for pcl::PointXYZ, pcl::PointNormal,
- * pcl::PointXYZRGBNormal). setIndices() restricts the segmentation to a subset; the other
+ * Stages 1–3 (the field) depend only on the input, the working size, the normals flag, the
+ * medial axis, its estimation's settings and, for the meso-skeleton, k: they are computed once
+ * and reused when segment() runs again with other grower or transfer parameters (δ0, η, α, λ,
+ * ω, the level of detail, visibility, the bend limit), as MeshSegmentation reuses its medial
+ * meshes. A reused stage reports 0 seconds. The input is taken as unchanged while it is the
+ * same object, of the same size, with the same indices.
+ *
+ * The cloud is segmented in a normalised frame: centred on its bounding box and scaled by a power
+ * of two to a diagonal near 1 (docs/robustness.md); what the getters return is in the input's
+ * frame. A cloud scaled by 2^k gets the same labels.
+ *
+ * PointT: pcl::PointXYZ, pcl::PointNormal or pcl::PointXYZRGBNormal (the library is compiled
+ * for these; copy other types into one of them). setIndices() restricts the segmentation to a subset; the other
  * points get label -1.
  */
 template <typename PointT>
@@ -261,6 +112,7 @@ public:
   setWorkingSize(std::size_t size)
   {
     skeleton_estimation_.setWorkingSize(size);
+    field_valid_ = false;
   }
 
   /** \brief Points kept for the medial step and the graph cut. */
@@ -289,6 +141,7 @@ public:
   setUseInputNormalsFlag(bool flag)
   {
     skeleton_estimation_.setUseInputNormalsFlag(flag);
+    field_valid_ = false;
   }
 
   /** \brief Whether the cloud's normals are used when PointT has them. */
@@ -298,149 +151,29 @@ public:
     return skeleton_estimation_.getParameters().use_input_normals;
   }
 
-  /** \brief With estimated normals and the medial mesh: when the base MAT falls apart into
-   * more than 8 components (a solid's medial axis is connected; no clean psb-dev cloud has more
-   * than 8), orient
-   * the normals again with the mirror relation (NormalOrientation::setMirrorRelationFlag) and
-   * keep that medial mesh if it has at most 3/4 of the components (default true). Noise on a
-   * plate thinner than the orientation neighbourhood flips whole patches of normals; the inside
-   * test then cuts the plate's medial sheet to pieces. */
-  void
-  setFragmentedMatRetryFlag(bool flag)
-  {
-    fragmented_mat_retry_ = flag;
-  }
-
-  /** \brief Whether a fragmented base MAT is retried with mirror-related normals. */
-  bool
-  getFragmentedMatRetryFlag() const
-  {
-    return fragmented_mat_retry_;
-  }
-
-  /** \brief Segmentations of a noisy cloud from which one consensus is kept (>= 1, default 9;
-   * 1: a single run). Noise makes the medial mesh foam, and which foam sheets survive Q-MAT
-   * depends on which samples the Voronoi step keeps: single runs of one noisy cloud differ by
-   * tenths of RI. With the medial mesh, each run thins the samples in another order
-   * (CloudMedialMeshEstimation::setSampleOrderSeed) and the run whose working labels agree most
-   * with the others' (detail::consensusLabeling: the medoid under the Rand distance) is kept;
-   * a run that fragments the cloud by chance disagrees with all the others. Its boundaries then
-   * move to where the runs agree (detail::voteByConsensus). A cloud counts as
-   * noisy when the preprocessing smoothed it (estimated normals, noise above 10 % of the point
-   * spacing); clean clouds get one run unless setConsensusForEveryCloudFlag(). Costs one
-   * medial step, growing and transfer per run. */
-  void
-  setConsensusRuns(int runs);
-
-  /** \brief Segmentations of a noisy cloud from which one consensus is kept. */
-  int
-  getConsensusRuns() const
-  {
-    return consensus_runs_;
-  }
-
-  /** \brief Co-association above which two adjacent parts of a consensus run merge, before the
-   * medoid of the runs is chosen (default 0.5; > 1: no merging). Where noise cut a part, the cut
-   * falls elsewhere in each run, so the other runs join most of what one run split there; a
-   * real boundary is cut by all (detail::mergeByConsensus). A run's own vote for its cut counts
-   * too: with nine runs, 0.5 asks that five of the other eight join the pair, where 0.4 let four
-   * (a chair's seat and back that four runs grow into one part). */
-  void
-  setConsensusMergeThreshold(double threshold);
-
-  /** \brief Co-association above which two adjacent parts of a consensus run merge. */
+  /** \brief The noise the last segment() estimated on the cloud: the Gaussian σ of the working
+   * points' offsets from their local surface, in the input's units (0 when the cloud's own
+   * normals were used: such a cloud is taken as it is). */
   double
-  getConsensusMergeThreshold() const
+  getEstimatedNoise() const
   {
-    return consensus_merge_threshold_;
+    return stats_.noise_sigma;
   }
 
-  /** \brief When the kept consensus run is merged, keep apart every pair of its parts that at
-   * least a third of the runs cut alike (default true; detail::mergeByConsensus). Noise hides
-   * some real boundaries from most runs: a noisy chair's seat and back that most of nine runs
-   * grow into one part are then joined by the merge, though the runs that cut them cut them
-   * in the same place — a noise cut falls somewhere else in each run. The medoid is still
-   * chosen among the plainly merged runs (with such cuts kept there, the majority that misses
-   * them would tend to look closer to each other). */
-  void
-  setConsensusKeepReproducedCutsFlag(bool flag)
-  {
-    consensus_keep_reproduced_cuts_ = flag;
-  }
-
-  /** \brief Whether the kept consensus run keeps the cuts a third of the runs reproduce. */
-  bool
-  getConsensusKeepReproducedCutsFlag() const
-  {
-    return consensus_keep_reproduced_cuts_;
-  }
-
-  /** \brief κ of MatRegionGrowing::setSharedBoundaryMergeFactor() for clouds treated as noisy
-   * (default 0.5; 0: off). Patches of a noisy cloud's medial mesh
-   * that share a long boundary merge without the visibility test: noise cuts plates and rims
-   * along lines of spheres, and the pieces of a cut sheet need not see each other through the
-   * noisy ball union (a cup's wall cut into strips that share 7–15 spheres each, ~√n of the
-   * smaller strip; κ = 2 leaves such a wall in many parts). Clean clouds (and meshes) merge as
-   * SEG-MAT does. */
-  void
-  setNoisyBoundaryMergeFactor(double factor);
-
-  /** \brief κ of the long-boundary merge for clouds treated as noisy. */
+  /** \brief Median nearest-neighbour distance of the working points of the last segment(), in
+   * the input's units (0 when the cloud's own normals were used). */
   double
-  getNoisyBoundaryMergeFactor() const
+  getEstimatedSpacing() const
   {
-    return noisy_boundary_factor_;
+    return stats_.spacing;
   }
 
-  /** \brief For clouds treated as noisy, keep every sphere centre that Q-MAT merges inside the
-   * splat surface (MedialMeshEstimation::setKeepCentresInside; default true; clean clouds never
-   * test, for speed). A centre outside the shape is wrong by construction, and the mesh path
-   * never allows one. On noisy thin plates it decides whether a plate becomes its own part: a
-   * chair's back that would join the seat, glasses whose two lenses would join. Costs ~16 % of a
-   * noisy cloud's time. */
-  void
-  setNoisyCentresInsideFlag(bool flag)
-  {
-    noisy_centres_inside_ = flag;
-  }
-
-  /** \brief Whether Q-MAT keeps the merged centres of a noisy cloud inside its surface. */
-  bool
-  getNoisyCentresInsideFlag() const
-  {
-    return noisy_centres_inside_;
-  }
-
-  /** \brief Apply setConsensusRuns() to every cloud, not only to noisy ones (default false;
-   * e.g. for noisy scans that come with their own normals, which are not smoothed or measured).
-   */
-  void
-  setConsensusForEveryCloudFlag(bool flag)
-  {
-    consensus_every_cloud_ = flag;
-  }
-
-  /** \brief Whether every cloud gets the consensus runs. */
-  bool
-  getConsensusForEveryCloudFlag() const
-  {
-    return consensus_every_cloud_;
-  }
-
-  /** \brief Runs the last segment() made: 1 for a clean cloud (and the meso-skeleton), the
-   * consensus runs for a noisy one; 0 before any. */
+  /** \brief Smoothing passes the last segment() applied to the working points: 0 for a cloud
+   * found clean (or one whose normals were used). */
   int
-  getConsensusRunsMade() const
+  getDenoisingPasses() const
   {
-    return runs_made_;
-  }
-
-  /** \brief The run whose segmentation the last segment() kept (0 with a single run); one run
-   * with CloudMedialMeshEstimation::setSampleOrderSeed(seed + kept run) repeats it. */
-  int
-  getConsensusRunKept() const
-  {
-    return run_kept_;
+    return stats_.smoothing_passes;
   }
 
   /** \brief Test visibility inside the medial balls before merging parts (default true). */
@@ -471,6 +204,7 @@ public:
   setMedialAxis(CloudMedialAxis axis)
   {
     medial_axis_ = axis;
+    field_valid_ = false;
   }
 
   /** \brief The medial axis built. */
@@ -485,6 +219,7 @@ public:
   CloudMedialMeshEstimation&
   getMedialMeshEstimation()
   {
+    field_valid_ = false; // the caller may change it
     return mesh_estimation_;
   }
 
@@ -493,6 +228,7 @@ public:
   setMesoSkeletonParameters(const MesoSkeletonParameters& params)
   {
     skeleton_estimation_.setParameters(params);
+    field_valid_ = false;
   }
 
   /** \brief The meso-skeleton parameters. */
@@ -509,6 +245,14 @@ public:
    */
   bool
   segment(std::vector<pcl::PointIndices>& parts);
+
+  /** \brief Segment the cloud, as MeshSegmentation::segment() does for meshes.
+   * \param[out] labels one label per input point (getLabels()): the part number, numbered by
+   *             descending part size; -1 for non-finite points and points outside the indices.
+   *             Empty on failure.
+   * \return false (PCL_ERROR) as segment(std::vector<pcl::PointIndices>&) */
+  bool
+  segment(std::vector<int>& labels);
 
   /** \brief One label per input point from the last segment(): the part number, -1 for
    * non-finite points and points outside the indices.
@@ -537,21 +281,24 @@ public:
     return skeleton_;
   }
 
-  /** \brief The base medial mesh of the last segment() (empty with the meso-skeleton). */
-  const MedialMesh&
+  /** \brief The base medial mesh of the last segment() (null with the meso-skeleton or before
+   * any). A new object when segment() computed it again. */
+  MedialMesh::ConstPtr
   getBaseMat() const
   {
     return base_;
   }
 
-  /** \brief The structured medial mesh of the last segment() (empty with the meso-skeleton). */
-  const MedialMesh&
+  /** \brief The structured medial mesh of the last segment() (null with the meso-skeleton or
+   * before any). */
+  MedialMesh::ConstPtr
   getStructuredMat() const
   {
     return structured_;
   }
 
-  /** \brief The MAT graph of the last segment() (null when none was built). */
+  /** \brief The MAT graph of the last segment(), in the normalised frame the cloud was
+   * segmented in (null when none was built). */
   MatGraph::ConstPtr
   getGraph() const
   {
@@ -578,7 +325,7 @@ public:
   const MesoSkeletonStatistics&
   getMesoSkeletonStatistics() const
   {
-    return skeleton_estimation_.getStatistics();
+    return stats_;
   }
 
 protected:
@@ -588,6 +335,11 @@ protected:
   using pcl::PCLBase<PointT>::deinitCompute;
 
 private:
+  /** \brief Preprocessing, medial axis and graph of the input (the field); false when a stage
+   * fails. */
+  bool
+  computeField();
+
   /** \brief Copies the input's xyz and the labels (and Glasbey colours for coloured types). */
   template <typename LabeledT>
   void
@@ -598,17 +350,18 @@ private:
   CloudMedialAxis medial_axis_ = CloudMedialAxis::MedialMesh;
   int k_ = 10;
   bool visibility_ = true;
-  bool fragmented_mat_retry_ = true;
-  int consensus_runs_ = 9;
-  double consensus_merge_threshold_ = 0.5;
-  bool consensus_keep_reproduced_cuts_ = true;
-  bool consensus_every_cloud_ = false;
-  double noisy_boundary_factor_ = 0.5;
-  bool noisy_centres_inside_ = true;
-  int runs_made_ = 0;
-  int run_kept_ = 0;
+  MesoSkeletonStatistics stats_; ///< the last segment()'s preprocessing
 
-  MedialMesh base_, structured_;
+  // The field: preprocessing, medial axis and graph, kept while only grower and transfer
+  // parameters change (see segment()).
+  bool field_valid_ = false;
+  bool field_medial_ok_ = false;
+  typename PointCloud::ConstPtr field_input_;
+  std::size_t field_size_ = 0;
+  pcl::Indices field_indices_;
+  std::vector<std::pair<std::string, double>> field_seconds_;
+  MedialMesh::ConstPtr base_, structured_;
+  StructureTags tags_;
   pcl::PointCloud<pcl::PointNormal>::Ptr working_;
   std::vector<int> input_to_working_;
 
@@ -621,6 +374,3 @@ private:
 
 } // namespace segmat
 
-#if defined(PCL_NO_PRECOMPILE) || defined(SEGMAT_NO_PRECOMPILE)
-#include <segmat/segmentation/impl/cloud_segmentation.hpp>
-#endif

@@ -202,27 +202,6 @@ public:
     visibility_ = std::move(visibility);
   }
 
-  /** \brief Let patches that share a long boundary merge without the visibility test (default
-   * 0: off, as in SEG-MAT).
-   *
-   * With κ > 0, two adjacent patches that share at least κ·√(spheres of the smaller one) spheres
-   * and pass the round's radius-histogram (EMD) test merge even when they do not see each other.
-   * Noise cuts a medial sheet (a plate, a rim) along a line of spheres, so its pieces share many;
-   * a limb bent at a joint shares a ring, few relative to its size, and stays apart. The shared
-   * spheres must also span a box diagonal of at least 8 of their median radii: a cut is long,
-   * while the shared spheres of a noisy joint can be many but stay within a few radii.
-   * CloudSegmentation sets it for clouds it finds noisy (setNoisyBoundaryMergeFactor()).
-   * \param[in] factor κ >= 0; other values are rejected with a warning
-   */
-  void
-  setSharedBoundaryMergeFactor(double factor);
-  /** \brief κ of setSharedBoundaryMergeFactor() (0: off). */
-  double
-  getSharedBoundaryMergeFactor() const
-  {
-    return shared_boundary_factor_;
-  }
-
   /** \brief Seed of the Monte-Carlo visibility sampling (default 0x5e6a7). */
   void
   setRandomSeed(unsigned seed)
@@ -294,7 +273,6 @@ private:
   int merge_rounds_;
   double max_seed_radius_ratio_;
   double max_bend_angle_;
-  double shared_boundary_factor_;
   SegmentVisibility visibility_;
   unsigned seed_;
 

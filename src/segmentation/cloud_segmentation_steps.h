@@ -1,0 +1,117 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#pragma once
+// Private to src/: the untyped steps of CloudSegmentation<PointT>::segment()
+// (src/segmentation/cloud_segmentation_impl.hpp), implemented in cloud_segmentation.cpp.
+
+#include <segmat/common/point_types.h>
+#include <segmat/geometry/medial_mesh.h>
+#include <segmat/medial/cloud_medial_mesh_estimation.h>
+#include <segmat/medial/mat_graph.h>
+#include <segmat/medial/meso_skeleton_estimation.h>
+#include <segmat/segmentation/label_transfer.h>
+#include <segmat/segmentation/mat_region_growing.h>
+#include <segmat/segmentation/structure_tags.h>
+
+#include <pcl/PointIndices.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace segmat {
+
+namespace detail {
+
+/** \brief The MAT graph of a meso-skeleton: segmat::MedialPointGraph with k neighbours.
+ * \return false (PCL_ERROR) when it cannot be built */
+bool
+medialPointGraph(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton, int k, MatGraph::Ptr& graph);
+
+/** \brief The medial mesh of the working cloud and its MAT graph and structure tags (as on
+ * meshes). Appends "medial" and "graph" to \a stage_seconds.
+ * \return false when the estimation fails (it said why) or the base MAT gives no graph node */
+bool
+medialMeshGraph(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& working,
+                CloudMedialMeshEstimation& estimation, MedialMesh& base, MedialMesh& structured,
+                MatGraph::Ptr& graph, StructureTags& tags,
+                std::vector<std::pair<std::string, double>>& stage_seconds);
+
+/** \brief When the base MAT computed from estimated normals falls apart (more than 8
+ * components), orient \a working's normals again with the mirror relation
+ * (NormalOrientation::setMirrorRelationFlag) and keep that medial mesh when it has at most 3/4
+ * of the components. \a working, the medial meshes, \a graph and \a tags are replaced when the
+ * retry is kept; its seconds are added to "medial" and "graph" either way.
+ * \return true when the retry was kept */
+bool
+retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working, int orientation_k,
+                                 CloudMedialMeshEstimation& estimation, MedialMesh& base,
+                                 MedialMesh& structured, MatGraph::Ptr& graph, StructureTags& tags,
+                                 std::vector<std::pair<std::string, double>>& stage_seconds);
+
+/** \brief What CloudSegmentation does once the MAT graph exists (untyped core).
+ * \param[in] graph the MAT graph (medial mesh or meso-skeleton)
+ * \param[in] tags its structure tags (empty: every node bulky)
+ * \param[in] working the working cloud with oriented normals the medial axis came from
+ * \param[in] transfer_k neighbours of the working cloud's graph in the transfer
+ * \param[in] visibility use the ball-union visibility when merging parts
+ * \param[in,out] grower the grower, parameters set (its graph and visibility are set here)
+ * \param[in,out] transfer the transfer, ω set (its inputs are set here)
+ * \param[out] working_labels one label per working point, in growing order (compacted)
+ * \param[out] label_parts for each label, the index of its part in \a parts
+ * \param[out] parts the grower's parts (MAT-graph nodes)
+ * \param[in,out] stage_seconds "grow_merge", "transfer" are appended
+ * \return false (PCL_ERROR) when a stage fails
+ */
+bool
+segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
+                    const pcl::PointCloud<pcl::PointNormal>& working, int transfer_k,
+                    bool visibility, MatRegionGrowing& grower, CloudLabelTransfer& transfer,
+                    std::vector<int>& working_labels, std::vector<int>& label_parts,
+                    std::vector<pcl::PointIndices>& parts,
+                    std::vector<std::pair<std::string, double>>& stage_seconds);
+
+/** \brief A cloud's normalised frame: p ↦ (p − centre) × scale (scale a power of two). */
+struct CloudFrame
+{
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double scale = 1.0;
+};
+
+/** \brief Moves the points of \a cloud into their normalised frame (centred on the bounding
+ * box of the finite points, scaled by a power of two to a diagonal in [1/√2, √2); normals
+ * unchanged). A cloud scaled by 2^k lands on the very same numbers.
+ * \return the frame */
+CloudFrame
+moveToNormalizedFrame(pcl::PointCloud<pcl::PointNormal>& cloud);
+
+/** \brief Maps what a segmentation in \a frame computed back to the input's frame: medial
+ * meshes, the meso-skeleton (its surface and contact indices from the copy's points to the
+ * input's through \a indices) and the noise and spacing estimates. */
+void
+moveFromNormalizedFrame(const CloudFrame& frame, const pcl::Indices& indices, MedialMesh& base,
+                        MedialMesh& structured, pcl::PointCloud<MedialPoint>& skeleton,
+                        MesoSkeletonStatistics& stats);
+
+/** \brief Input labels from working labels, renumbered by descending point count (ties: the
+ * lower label first); parts[l] lists the input points of label l, ascending.
+ * \param[in] input_to_working per input point, its working point (-1: no label)
+ * \param[in] working_labels per working point, its label
+ * \param[out] labels per input point (-1 where input_to_working is -1)
+ * \param[out] parts per final label, its input points
+ * \param[out] rank per working label, its final label
+ */
+void
+labelInputPoints(const std::vector<int>& input_to_working, const std::vector<int>& working_labels,
+                 std::vector<int>& labels, std::vector<pcl::PointIndices>& parts,
+                 std::vector<int>& rank);
+
+} // namespace detail
+
+} // namespace segmat
