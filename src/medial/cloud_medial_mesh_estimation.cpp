@@ -4,7 +4,7 @@
  */
 #include <segmat/medial/cloud_medial_mesh_estimation.h>
 
-#include <segmat/common/checked_setter.h>
+#include "../common/checked_setter.h"
 #include <segmat/geometry/splat_surface.h>
 #include <segmat/geometry/winding_number.h>
 

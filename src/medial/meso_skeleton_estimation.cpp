@@ -6,7 +6,7 @@
 #include <segmat/medial/meso_skeleton_estimation.h>
 #include <segmat/medial/shrinking_ball_estimation.h>
 #include <segmat/medial/voxel_sampling.h>
-#include <segmat/medial/impl/meso_skeleton_estimation.hpp>
+#include "meso_skeleton_estimation_impl.hpp"
 
 #include "../common/point_kd_tree.h"
 #include "../common/thread_count.h"

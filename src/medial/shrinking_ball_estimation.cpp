@@ -2,7 +2,7 @@
  * segmat — 3D shape segmentation with the medial axis transform.
  * SPDX-License-Identifier: BSD-3-Clause
  */
-#include <segmat/common/checked_setter.h>
+#include "../common/checked_setter.h"
 #include <segmat/medial/shrinking_ball_estimation.h>
 
 #include "../common/point_kd_tree.h"

@@ -5,8 +5,8 @@
 #pragma once
 // Private to src/: CloudSegmentation's template code, instantiated in cloud_segmentation.cpp.
 
-#include <segmat/common/checked_setter.h>
-#include <segmat/medial/impl/meso_skeleton_estimation.hpp>
+#include "../common/checked_setter.h"
+#include "../medial/meso_skeleton_estimation_impl.hpp"
 #include <segmat/segmentation/cloud_segmentation.h>
 
 #include "../medial/preprocess_cloud.h"

@@ -3,7 +3,7 @@
  * SPDX-License-Identifier: BSD-3-Clause
  */
 #include "growing_cost.h"
-#include <segmat/common/checked_setter.h>
+#include "../common/checked_setter.h"
 #include <segmat/segmentation/mat_region_growing.h>
 #include "patch_merging.h"
 

@@ -4,7 +4,8 @@
  */
 #pragma once
 
-#include <segmat/common/checked_setter.h>
+#include "../common/checked_setter.h"
+#include "preprocess_cloud.h"
 #include <segmat/medial/meso_skeleton_estimation.h>
 
 #include <pcl/console/print.h>
