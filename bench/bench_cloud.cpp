@@ -112,7 +112,7 @@ main(int argc, char** argv)
                 mesh_path.c_str(), cloud->size(), estimate ? "estimated" : "input", threads,
                 ok ? "ok" : "FAILED", parts.size(), cpu, total);
     for (const auto& stage : seg.getStageSeconds())
-      std::printf(" %s %.3f", stage.first.c_str(), stage.second);
+      std::printf(" %s %.3f", stage.name.c_str(), stage.seconds);
     if (meso) {
       const auto& stats = seg.getMesoSkeletonStatistics();
       std::printf(" ) working %zu, balls %zu (%.3f s), medial points %zu\n",

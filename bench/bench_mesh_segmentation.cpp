@@ -82,8 +82,8 @@ main(int argc, char** argv)
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       for (const auto& stage : segmentation.getStageSeconds()) {
         if (rep == 0)
-          order.push_back(stage.first);
-        seconds[stage.first].push_back(stage.second);
+          order.push_back(stage.name);
+        seconds[stage.name].push_back(stage.seconds);
       }
       std::vector<pcl::PointIndices> parts;
       segmentation.getParts(parts);

@@ -86,9 +86,9 @@ main(int argc, char** argv)
       faces = mesh->numFaces();
       stage_seconds["load"].push_back(load);
       for (const auto& stage : segmentation.getStageSeconds()) {
-        if (std::find(stage_order.begin(), stage_order.end(), stage.first) == stage_order.end())
-          stage_order.push_back(stage.first);
-        stage_seconds[stage.first].push_back(stage.second);
+        if (std::find(stage_order.begin(), stage_order.end(), stage.name) == stage_order.end())
+          stage_order.push_back(stage.name);
+        stage_seconds[stage.name].push_back(stage.seconds);
       }
     }
     const std::string name = std::filesystem::path(path).stem().string();

@@ -159,8 +159,8 @@ main(int argc, char** argv)
       const double total = std::chrono::duration<double>(Clock::now() - start).count();
       double mat = 0.0;
       for (const auto& stage : seg.getStageSeconds())
-        if (stage.first == "mat")
-          mat = stage.second;
+        if (stage.name == "mat")
+          mat = stage.seconds;
       shape_mat += mat;
       shape_segment += total - mat;
       segmat::PsbScores scores;

@@ -19,27 +19,27 @@ jsonSizes(const std::vector<pcl::PointIndices>& parts)
 }
 
 std::string
-jsonSeconds(const StageSeconds& seconds)
+jsonSeconds(const StageTimings& seconds)
 {
   std::string out = "{";
   char number[32];
   for (std::size_t k = 0; k < seconds.size(); ++k) {
-    std::snprintf(number, sizeof number, "%.6f", seconds[k].second);
-    out += (k ? ", \"" : "\"") + seconds[k].first + "\": " + number;
+    std::snprintf(number, sizeof number, "%.6f", seconds[k].seconds);
+    out += (k ? ", \"" : "\"") + seconds[k].name + "\": " + number;
   }
   return out + "}";
 }
 
 void
 printPartsText(const char* element, const std::vector<pcl::PointIndices>& parts,
-               const StageSeconds& seconds)
+               const StageTimings& seconds)
 {
   std::printf("parts: %zu\n%s counts:", parts.size(), element);
   for (const auto& part : parts)
     std::printf(" %zu", part.indices.size());
   std::printf("\nseconds:");
   for (const auto& stage : seconds)
-    std::printf(" %s %.4f", stage.first.c_str(), stage.second);
+    std::printf(" %s %.4f", stage.name.c_str(), stage.seconds);
 }
 
 void

@@ -5,6 +5,7 @@
 #pragma once
 // What the segmenting programs print on stdout: text or JSON pieces (not installed).
 
+#include <segmat/common/stage_timing.h>
 #include <segmat/io/atomic_file.h>
 
 #include <pcl/PointIndices.h>
@@ -16,7 +17,7 @@
 namespace segmat {
 namespace cli {
 
-using StageSeconds = std::vector<std::pair<std::string, double>>;
+
 
 /** \brief `[n0, n1, ...]`: the parts' sizes. */
 std::string
@@ -24,12 +25,12 @@ jsonSizes(const std::vector<pcl::PointIndices>& parts);
 
 /** \brief `{"stage": seconds, ...}`. */
 std::string
-jsonSeconds(const StageSeconds& seconds);
+jsonSeconds(const StageTimings& seconds);
 
 /** \brief "parts: N", "ELEMENT counts: ...", "seconds: ..." lines, without the last newline. */
 void
 printPartsText(const char* element, const std::vector<pcl::PointIndices>& parts,
-               const StageSeconds& seconds);
+               const StageTimings& seconds);
 
 /** \brief "wrote A, B, ..." and a newline. */
 void

@@ -173,7 +173,7 @@ run(int argc, char** argv)
   outputs.commit(); // every output appears together, or none
   const double write_seconds = progress.done();
 
-  StageSeconds seconds{{"load", load_seconds}};
+  StageTimings seconds{{"load", load_seconds}};
   for (const auto& stage : segmentation.getStageSeconds())
     seconds.push_back(stage);
   seconds.emplace_back("write", write_seconds);

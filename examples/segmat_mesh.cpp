@@ -164,7 +164,7 @@ run(int argc, char** argv)
   }
   std::vector<pcl::PointIndices> parts;
   segmentation.getParts(parts);
-  StageSeconds seconds{{"load", load_seconds}};
+  StageTimings seconds{{"load", load_seconds}};
   for (const auto& stage : segmentation.getStageSeconds())
     seconds.push_back(stage);
   if (boxes)

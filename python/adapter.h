@@ -7,6 +7,7 @@
 // CloudSegmentation): their segment() calls, their setters and getters. A change of those
 // signatures is a change here only.
 
+#include <segmat/common/stage_timing.h>
 #include <segmat/segmentation/cloud_segmentation.h>
 #include <segmat/segmentation/mesh_segmentation.h>
 
@@ -148,7 +149,7 @@ cloudParameters()
 /** What one segment() produced besides the labels (the command-line programs' --json). */
 struct RunInfo
 {
-  std::vector<std::pair<std::string, double>> stage_seconds;
+  segmat::StageTimings stage_seconds;
   double cpp_seconds = 0.0; ///< wall time of the C++ segment() call
   bool mat_computed = false;
   std::size_t base_spheres = 0, structured_spheres = 0;

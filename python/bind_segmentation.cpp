@@ -217,7 +217,7 @@ public:
       return py::none();
     py::dict seconds;
     for (const auto& stage : last.stage_seconds)
-      seconds[py::str(stage.first)] = stage.second;
+      seconds[py::str(stage.name)] = stage.seconds;
     py::dict d;
     d["parts"] = counts.size();
     d[py::str(counts_key_)] = py::cast(counts);

@@ -309,7 +309,7 @@ TEST(CloudSegmentation, NanPointsAndIndicesAreLeftUnlabelled)
   // Stage timings, in pipeline order.
   std::vector<std::string> names;
   for (const auto& stage : seg.getStageSeconds())
-    names.push_back(stage.first);
+    names.push_back(stage.name);
   EXPECT_EQ(names, (std::vector<std::string>{"preprocessing", "medial", "graph", "grow_merge",
                                               "transfer", "labels"}));
 }
@@ -348,8 +348,8 @@ TEST(CloudSegmentation, ReusesItsFieldWhenOnlyGrowingOrTransferParametersChange)
   const auto cloud = sampleMesh(mesh, 8000, 1).toCloud<pcl::PointXYZ>();
   auto stage = [](const CloudSegmentation<pcl::PointXYZ>& seg, const std::string& name) {
     for (const auto& s : seg.getStageSeconds())
-      if (s.first == name)
-        return s.second;
+      if (s.name == name)
+        return s.seconds;
     return -1.0;
   };
   CloudSegmentation<pcl::PointXYZ> seg;

@@ -259,8 +259,8 @@ TEST(MeshFromMeshAlone, TeddyGoldenAndDeterministic)
   EXPECT_TRUE(seg.hasComputedMats());
   EXPECT_EQ(seg.getBaseMat()->numVertices(), 2000u); // the estimator's default target
   ASSERT_GE(seg.getStageSeconds().size(), 1u);
-  EXPECT_EQ(seg.getStageSeconds()[1].first, "mat");
-  EXPECT_GT(seg.getStageSeconds()[1].second, 0.0);
+  EXPECT_EQ(seg.getStageSeconds()[1].name, "mat");
+  EXPECT_GT(seg.getStageSeconds()[1].seconds, 0.0);
 
   // The authors' program with their own MATs gives 8 parts of these sizes. From the mesh alone
   // each part is within 5 % of it, or within 0.5 % of the faces (95) for the small ones (the
@@ -279,7 +279,7 @@ TEST(MeshFromMeshAlone, TeddyGoldenAndDeterministic)
   std::vector<int> again;
   ASSERT_TRUE(seg.segment(again));
   EXPECT_EQ(again, labels);
-  EXPECT_EQ(seg.getStageSeconds()[1].second, 0.0);
+  EXPECT_EQ(seg.getStageSeconds()[1].seconds, 0.0);
   // A new target drops them.
   seg.setBaseMatTarget(1000);
   EXPECT_EQ(seg.getBaseMatTarget(), 1000);

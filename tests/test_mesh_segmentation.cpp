@@ -94,14 +94,14 @@ TEST(MeshSegmentation, TeddyMatchesTheReferenceParts)
   // Stages in order, and the node parts line up with the face parts.
   const auto& stages = seg.getStageSeconds();
   ASSERT_EQ(stages.size(), 7u);
-  EXPECT_EQ(stages[0].first, "denoise");
-  EXPECT_EQ(stages[1].first, "mat");
-  EXPECT_EQ(stages[1].second, 0.0); // given, not computed
-  EXPECT_EQ(stages[2].first, "graph");
-  EXPECT_EQ(stages[3].first, "tags");
-  EXPECT_EQ(stages[4].first, "surface_tree");
-  EXPECT_EQ(stages[5].first, "grow_merge");
-  EXPECT_EQ(stages[6].first, "transfer");
+  EXPECT_EQ(stages[0].name, "denoise");
+  EXPECT_EQ(stages[1].name, "mat");
+  EXPECT_EQ(stages[1].seconds, 0.0); // given, not computed
+  EXPECT_EQ(stages[2].name, "graph");
+  EXPECT_EQ(stages[3].name, "tags");
+  EXPECT_EQ(stages[4].name, "surface_tree");
+  EXPECT_EQ(stages[5].name, "grow_merge");
+  EXPECT_EQ(stages[6].name, "transfer");
   EXPECT_FALSE(seg.hasComputedMats());
   EXPECT_EQ(seg.getMatParts().size(), 8u);
   ASSERT_TRUE(seg.getGraph());
@@ -168,10 +168,10 @@ TEST(MeshSegmentation, ParametersChangeWithoutRecomputingTheField)
   seg.setSmoothnessWeight(0.5);
   ASSERT_TRUE(seg.segment(again));
   const auto& stages = seg.getStageSeconds();
-  EXPECT_EQ(stages[0].second, 0.0); // denoising reused
-  EXPECT_EQ(stages[2].second, 0.0); // graph reused
-  EXPECT_EQ(stages[3].second, 0.0); // tags reused
-  EXPECT_EQ(stages[4].second, 0.0); // surface tree reused
+  EXPECT_EQ(stages[0].seconds, 0.0); // denoising reused
+  EXPECT_EQ(stages[2].seconds, 0.0); // graph reused
+  EXPECT_EQ(stages[3].seconds, 0.0); // tags reused
+  EXPECT_EQ(stages[4].seconds, 0.0); // surface tree reused
   // Same answer as a fresh object with those parameters.
   MeshSegmentation fresh = teddySegmentation();
   fresh.setGrowingThreshold(0.03);
@@ -182,7 +182,7 @@ TEST(MeshSegmentation, ParametersChangeWithoutRecomputingTheField)
   // A new base MAT invalidates the field.
   seg.setBaseMat(teddy().base);
   ASSERT_TRUE(seg.segment(again));
-  EXPECT_GT(seg.getStageSeconds()[2].second, 0.0);
+  EXPECT_GT(seg.getStageSeconds()[2].seconds, 0.0);
 }
 
 TEST(MeshSegmentation, BadInputFailsCleanly)

@@ -103,6 +103,6 @@ TEST(SegmentationHierarchy, TeddyLevelsNestAndGetFiner)
   EXPECT_LT(levels.front().parents.size(), levels.back().parents.size());
   // The medial meshes were given, so no level computed any; the later levels reused the graph.
   for (const auto& stage : seg.getStageSeconds())
-    if (stage.first == "mat" || stage.first == "graph" || stage.first == "tags")
-      EXPECT_EQ(stage.second, 0.0) << stage.first;
+    if (stage.name == "mat" || stage.name == "graph" || stage.name == "tags")
+      EXPECT_EQ(stage.seconds, 0.0) << stage.name;
 }

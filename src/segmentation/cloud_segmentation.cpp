@@ -24,16 +24,16 @@ namespace detail {
 namespace {
 /// Adds each stage of \a more to the stage of the same name in \a total, appending new ones.
 void
-addStageSeconds(const std::vector<std::pair<std::string, double>>& more,
-                std::vector<std::pair<std::string, double>>& total)
+addStageSeconds(const StageTimings& more,
+                StageTimings& total)
 {
   for (const auto& stage : more) {
     auto mine = std::find_if(total.begin(), total.end(),
-                             [&](const auto& t) { return t.first == stage.first; });
+                             [&](const auto& t) { return t.name == stage.name; });
     if (mine == total.end())
       total.push_back(stage);
     else
-      mine->second += stage.second;
+      mine->seconds += stage.seconds;
   }
 }
 
@@ -57,7 +57,7 @@ bool
 medialMeshGraph(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& working,
                 CloudMedialMeshEstimation& estimation, MedialMesh& base, MedialMesh& structured,
                 MatGraph::Ptr& graph, StructureTags& tags,
-                std::vector<std::pair<std::string, double>>& stage_seconds)
+                StageTimings& stage_seconds)
 {
   auto start = std::chrono::steady_clock::now();
   estimation.setInputCloud(working);
@@ -84,7 +84,7 @@ bool
 retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working, int orientation_k,
                                  CloudMedialMeshEstimation& estimation, MedialMesh& base,
                                  MedialMesh& structured, MatGraph::Ptr& graph, StructureTags& tags,
-                                 std::vector<std::pair<std::string, double>>& stage_seconds)
+                                 StageTimings& stage_seconds)
 {
   // A solid's medial axis is connected; clean clouds leave a few stray spheres (no clean
   // psb-dev cloud has more than 8 components), a plate whose normals flipped in patches leaves
@@ -100,7 +100,7 @@ retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working
   MedialMesh other_base, other_structured;
   MatGraph::Ptr other_graph;
   StructureTags other_tags;
-  std::vector<std::pair<std::string, double>> other_seconds;
+  StageTimings other_seconds;
   const auto start = std::chrono::steady_clock::now();
   bool ok = orientation.orient(*mirrored);
   // The re-orientation counts as medial time (the first orientation is preprocessing's).
@@ -128,7 +128,7 @@ segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
                     bool visibility, MatRegionGrowing& grower, CloudLabelTransfer& transfer,
                     std::vector<int>& working_labels, std::vector<int>& label_parts,
                     std::vector<pcl::PointIndices>& parts,
-                    std::vector<std::pair<std::string, double>>& stage_seconds)
+                    StageTimings& stage_seconds)
 {
   working_labels.clear();
   label_parts.clear();

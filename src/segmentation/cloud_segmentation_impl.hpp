@@ -135,7 +135,7 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
                      *indices_ == field_indices_;
   if (reuse) {
     for (const auto& stage : field_seconds_)
-      stage_seconds_.emplace_back(stage.first, 0.0);
+      stage_seconds_.emplace_back(stage.name, 0.0);
   }
   else {
     if (!computeField()) {

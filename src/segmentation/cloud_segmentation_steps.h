@@ -6,6 +6,7 @@
 // Private to src/: the untyped steps of CloudSegmentation<PointT>::segment()
 // (src/segmentation/cloud_segmentation_impl.hpp), implemented in cloud_segmentation.cpp.
 
+#include <segmat/common/stage_timing.h>
 #include <segmat/common/point_types.h>
 #include <segmat/geometry/medial_mesh.h>
 #include <segmat/medial/cloud_medial_mesh_estimation.h>
@@ -41,7 +42,7 @@ bool
 medialMeshGraph(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& working,
                 CloudMedialMeshEstimation& estimation, MedialMesh& base, MedialMesh& structured,
                 MatGraph::Ptr& graph, StructureTags& tags,
-                std::vector<std::pair<std::string, double>>& stage_seconds);
+                StageTimings& stage_seconds);
 
 /** \brief When the base MAT computed from estimated normals falls apart (more than 8
  * components), orient \a working's normals again with the mirror relation
@@ -53,7 +54,7 @@ bool
 retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working, int orientation_k,
                                  CloudMedialMeshEstimation& estimation, MedialMesh& base,
                                  MedialMesh& structured, MatGraph::Ptr& graph, StructureTags& tags,
-                                 std::vector<std::pair<std::string, double>>& stage_seconds);
+                                 StageTimings& stage_seconds);
 
 /** \brief What CloudSegmentation does once the MAT graph exists (untyped core).
  * \param[in] graph the MAT graph (medial mesh or meso-skeleton)
@@ -75,7 +76,7 @@ segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
                     bool visibility, MatRegionGrowing& grower, CloudLabelTransfer& transfer,
                     std::vector<int>& working_labels, std::vector<int>& label_parts,
                     std::vector<pcl::PointIndices>& parts,
-                    std::vector<std::pair<std::string, double>>& stage_seconds);
+                    StageTimings& stage_seconds);
 
 /** \brief A cloud's normalised frame: p ↦ (p − centre) × scale (scale a power of two). */
 struct CloudFrame

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <segmat/common/stage_timing.h>
 #include <segmat/common/point_types.h>
 #include <segmat/geometry/medial_mesh.h>
 #include <segmat/medial/cloud_medial_mesh_estimation.h>
@@ -315,7 +316,7 @@ public:
   /** \brief Seconds per stage of the last segment(), in pipeline order: "preprocessing",
    * "medial", "graph", "grow_merge", "transfer", "labels".
    */
-  const std::vector<std::pair<std::string, double>>&
+  const StageTimings&
   getStageSeconds() const
   {
     return stage_seconds_;
@@ -359,7 +360,7 @@ private:
   typename PointCloud::ConstPtr field_input_;
   std::size_t field_size_ = 0;
   pcl::Indices field_indices_;
-  std::vector<std::pair<std::string, double>> field_seconds_;
+  StageTimings field_seconds_;
   MedialMesh::ConstPtr base_, structured_;
   StructureTags tags_;
   pcl::PointCloud<pcl::PointNormal>::Ptr working_;
@@ -369,7 +370,7 @@ private:
   MatGraph::Ptr graph_;
   std::vector<int> labels_;
   std::vector<pcl::PointIndices> mat_parts_;
-  std::vector<std::pair<std::string, double>> stage_seconds_;
+  StageTimings stage_seconds_;
 };
 
 } // namespace segmat

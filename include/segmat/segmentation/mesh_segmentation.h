@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <segmat/common/stage_timing.h>
 #include <segmat/geometry/aabb_tree.h>
 #include <segmat/geometry/medial_mesh.h>
 #include <segmat/geometry/triangle_mesh.h>
@@ -204,7 +205,7 @@ public:
   /** \brief Seconds spent in each stage by the last segment(), in pipeline order ("denoise",
    * "mat", "graph", "tags", "surface_tree", "grow_merge", "transfer"); a stage whose result was reused reports 0.
    */
-  const std::vector<std::pair<std::string, double>>&
+  const StageTimings&
   getStageSeconds() const
   {
     return stage_seconds_;
@@ -264,7 +265,7 @@ private:
 
   std::vector<int> face_labels_;
   std::vector<pcl::PointIndices> mat_parts_;
-  std::vector<std::pair<std::string, double>> stage_seconds_;
+  StageTimings stage_seconds_;
 };
 
 } // namespace segmat
