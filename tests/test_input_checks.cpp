@@ -111,17 +111,17 @@ TEST(SurfaceSampling, TheCountEstimateBoundsTheSamplesAndIsTightWhenDense)
 TEST(NormalizedFrame, PowerOfTwoScalesGiveBitIdenticalFrameCoordinates)
 {
   const TriangleMesh mesh = io::loadOff(kTeddyDir + "teddy.off");
-  const detail::CanonicalMesh reference = detail::canonicalMesh(mesh);
-  const double d = reference.mesh.boundingBoxDiagonal();
+  const TriangleMesh reference = detail::NormalizedFrame::of(mesh.vertices).toFrame(mesh);
+  const double d = reference.boundingBoxDiagonal();
   EXPECT_GE(d, std::sqrt(0.5));
   EXPECT_LT(d, std::sqrt(2.0));
   for (int k : {-40, -3, 1, 17, 300}) {
     TriangleMesh scaled = mesh;
     for (Eigen::Vector3d& p : scaled.vertices)
       p = std::ldexp(1.0, k) * p;
-    const detail::CanonicalMesh moved = detail::canonicalMesh(scaled);
-    EXPECT_EQ(moved.mesh.vertices, reference.mesh.vertices) << k;
-    EXPECT_EQ(moved.mesh.faces, reference.mesh.faces) << k;
+    const TriangleMesh moved = detail::NormalizedFrame::of(scaled.vertices).toFrame(scaled);
+    EXPECT_EQ(moved.vertices, reference.vertices) << k;
+    EXPECT_EQ(moved.faces, reference.faces) << k;
   }
   // Coordinates near the double limit still get a finite frame.
   TriangleMesh huge = mesh;
@@ -137,11 +137,10 @@ TEST(NormalizedFrame, FrameCopyKeepsTheInputOrder)
   // The copy is the input moved into its frame, vertex for vertex and face for face (a sorted
   // order would move the samples' index-hashed jitter: see docs/robustness.md).
   const TriangleMesh mesh = test::capsule(0.3, 2.0, 24, 12, 6);
-  const detail::CanonicalMesh copy = detail::canonicalMesh(mesh);
-  ASSERT_EQ(copy.mesh.vertices.size(), mesh.vertices.size());
+  const detail::NormalizedFrame frame = detail::NormalizedFrame::of(mesh.vertices);
+  const TriangleMesh copy = frame.toFrame(mesh);
+  ASSERT_EQ(copy.vertices.size(), mesh.vertices.size());
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
-    EXPECT_EQ(copy.mesh.vertices[v], copy.frame.toFrame(mesh.vertices[v]));
-  EXPECT_EQ(copy.mesh.faces, mesh.faces);
-  for (std::size_t k = 0; k < copy.face_order.size(); ++k)
-    EXPECT_EQ(copy.face_order[k], static_cast<int>(k));
+    EXPECT_EQ(copy.vertices[v], frame.toFrame(mesh.vertices[v]));
+  EXPECT_EQ(copy.faces, mesh.faces);
 }

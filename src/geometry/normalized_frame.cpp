@@ -133,24 +133,14 @@ NormalizedFrame::fromFrame(const MedialMesh& mat) const
   return mappedMat(mat, [this](const Eigen::Vector3d& c) { return fromFrame(c); }, 1.0 / scale);
 }
 
-CanonicalMesh
-canonicalMesh(const TriangleMesh& mesh, bool principal_axes)
+TriangleMesh
+NormalizedFrame::toFrame(const TriangleMesh& mesh) const
 {
-  CanonicalMesh out;
-  out.frame = NormalizedFrame::of(mesh.vertices, principal_axes);
-  const int nv = static_cast<int>(mesh.vertices.size());
-  std::vector<Eigen::Vector3d> moved(nv);
-  for (int v = 0; v < nv; ++v)
-    moved[v] = out.frame.toFrame(mesh.vertices[v]);
-  // The input's vertex and face order is kept: sorting them lexicographically made every
-  // order give the same labels, but it also moves the samples' index-hashed jitter and the
-  // order of equal-cost choices, and on psb-dev it cost 0.017 of 1 − RI. Reordered input
-  // therefore gives labels that differ as much as any change of those choices does.
-  out.mesh.vertices = std::move(moved);
-  out.mesh.faces = mesh.faces;
-  out.face_order.resize(mesh.faces.size());
-  std::iota(out.face_order.begin(), out.face_order.end(), 0);
-  return out;
+  std::vector<Eigen::Vector3d> moved;
+  moved.reserve(mesh.vertices.size());
+  for (const Eigen::Vector3d& v : mesh.vertices)
+    moved.push_back(toFrame(v));
+  return TriangleMesh(std::move(moved), mesh.faces);
 }
 
 } // namespace detail

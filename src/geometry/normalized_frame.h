@@ -62,25 +62,18 @@ struct NormalizedFrame
     return p / scale + centre;
   }
 
+  /** \brief The mesh moved into the frame, vertex for vertex, faces as they are: the input's
+   * order is kept, since the samples' index-hashed jitter and the order of equal-cost choices
+   * follow it (docs/robustness.md). */
+  TriangleMesh
+  toFrame(const TriangleMesh& mesh) const;
+
   /** \brief Centres and radii mapped into the frame (toFrame) or back (fromFrame). */
   MedialMesh
   toFrame(const MedialMesh& mat) const;
   MedialMesh
   fromFrame(const MedialMesh& mat) const;
 };
-
-/** \brief A mesh in its normalised frame, vertices and faces in the input's order
- * (`face_order[k]` is the input face of face k: the identity; see canonicalMesh()).
- */
-struct CanonicalMesh
-{
-  NormalizedFrame frame;
-  TriangleMesh mesh;
-  std::vector<int> face_order;
-};
-
-CanonicalMesh
-canonicalMesh(const TriangleMesh& mesh, bool principal_axes = false);
 
 } // namespace detail
 } // namespace segmat

@@ -30,7 +30,7 @@ sidedHeightFit(const std::vector<Eigen::Vector3f>& points, int self, const pcl::
                         e2 = pca.eigenvectors().col(2);
   const Eigen::Vector3d origin = points[self].cast<double>();
   const std::size_t m = nn.size();
-  // Called once per sample and pass: reuse the thread's buffers instead of allocating.
+  // Per-thread buffers: the fit runs for every sample in every pass.
   thread_local std::vector<Eigen::Matrix<double, 6, 1>> basis;
   thread_local std::vector<double> height, spatial;
   basis.resize(m);

@@ -68,9 +68,9 @@ MeshSegmentation::prepareWorkingMesh()
     return;
   // The mesh's vertices are samples of its surface: the cloud path's noise design serves them,
   // with the mesh's rings as neighbourhoods. A clean mesh is left as it is (bit for bit).
-  auto denoised = std::make_shared<TriangleMesh>(*mesh_);
+  std::vector<Eigen::Vector3d> vertices = mesh_->vertices;
   const detail::SurfaceDenoising denoising =
-      detail::denoiseMeshSurface(denoised->vertices, mesh_->faces, 32, 5,
+      detail::denoiseMeshSurface(vertices, mesh_->faces, 32, 5,
                                  detail::threadCount(getNumberOfThreads()), 4.0);
   noise_sigma_ = denoising.noise.sigma;
   denoising_passes_ = denoising.passes;
@@ -78,7 +78,7 @@ MeshSegmentation::prepareWorkingMesh()
     working_mesh_ = mesh_;
     return;
   }
-  working_mesh_ = denoised;
+  working_mesh_ = std::make_shared<TriangleMesh>(std::move(vertices), mesh_->faces);
 }
 
 void

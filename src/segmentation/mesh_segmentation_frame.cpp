@@ -17,7 +17,6 @@ struct MeshSegmentation::FrameCache
   bool principal_axes = false;    // the frame option it was made with
   TriangleMesh::ConstPtr mesh;    // its copy in the normalised frame
   detail::NormalizedFrame frame;
-  std::vector<int> face_order;    // face k of the copy = input face face_order[k]
   // Given MATs: the caller's pointers and their frame copies.
   MedialMesh::ConstPtr given_base, given_structured, base, structured;
   // Computed MATs: in the frame (what the pipeline holds) and in the input's frame (returned).
@@ -33,13 +32,11 @@ MeshSegmentation::segment(std::vector<int>& face_labels)
     frame_ = std::make_shared<FrameCache>();
   FrameCache& cache = *frame_;
   if (cache.source != mesh_ || cache.principal_axes != principal_axes_) {
-    detail::CanonicalMesh canonical = detail::canonicalMesh(*mesh_, principal_axes_);
     cache = FrameCache();
     cache.source = mesh_;
     cache.principal_axes = principal_axes_;
-    cache.mesh = std::make_shared<const TriangleMesh>(std::move(canonical.mesh));
-    cache.frame = canonical.frame;
-    cache.face_order = std::move(canonical.face_order);
+    cache.frame = detail::NormalizedFrame::of(mesh_->vertices, principal_axes_);
+    cache.mesh = std::make_shared<const TriangleMesh>(cache.frame.toFrame(*mesh_));
     surface_tree_.reset();
   }
   // The transfer's mesh is set by segmentInFrame: the frame copy, or its denoised version.
@@ -87,9 +84,7 @@ MeshSegmentation::segment(std::vector<int>& face_labels)
   face_labels.clear();
   if (!ok)
     return false;
-  face_labels.resize(labels.size());
-  for (std::size_t k = 0; k < labels.size(); ++k)
-    face_labels[cache.face_order[k]] = labels[k];
+  face_labels = std::move(labels); // the frame copy keeps the input's faces
   face_labels_ = face_labels;
   return true;
 }
