@@ -15,7 +15,10 @@
  *
  *   build/bin/bench_noise [PSB_DIR] [--kind mesh|cloud] [--levels 0,0.2,0.5,1]
  *                         [--models 1,21,...|--half tune|check] [--points N] [--seed-offset K]
- *                         [--write DIR]
+ *                         [--draws K] [--write DIR]
+ * --draws K (meshes) segments each noisy mesh K times, with jitter seeds 0..K-1
+ * (MeshSegmentation::setJitterSeed), and averages: single draws differ by more than many changes
+ * one would want to measure (docs/robustness.md).
  * PSB_DIR defaults to ../shared/data/psb-dev. Levels are in percent of the diagonal. --half tune
  * takes ids 1, 21, 41, ... (id mod 20 = 1), --half check ids 6, 26, 46, ... --write DIR writes
  * the noisy meshes as DIR/LEVEL/off/N.off (the input of segmat_mesh or scripts/eval_psb.sh).
@@ -53,6 +56,7 @@ struct Result
   double ri = 0.0;
   int parts = 0;
   double seconds = 0.0;
+  int draw = 0;
 };
 
 std::vector<double>
@@ -67,7 +71,8 @@ parseList(const std::string& text)
 
 Result
 segmentMesh(const segmat::TriangleMesh& clean, double level, std::uint32_t seed,
-            const std::vector<std::vector<int>>& humans, const std::string& write_path)
+            std::uint32_t draw, const std::vector<std::vector<int>>& humans,
+            const std::string& write_path)
 {
   auto input = std::make_shared<segmat::TriangleMesh>(clean);
   if (level > 0.0)
@@ -79,6 +84,7 @@ segmentMesh(const segmat::TriangleMesh& clean, double level, std::uint32_t seed,
   segmat::MeshSegmentation seg;
   seg.setInputMesh(input);
   seg.setNumberOfThreads(1);
+  seg.setJitterSeed(draw);
   std::vector<int> labels;
   const auto start = std::chrono::steady_clock::now();
   const bool ok = seg.segment(labels);
@@ -124,6 +130,7 @@ main(int argc, char** argv)
   std::vector<int> only;
   std::size_t points = 20000;
   std::uint32_t seed_offset = 0;
+  int draws = 1;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const bool has_value = i + 1 < argc;
@@ -140,6 +147,8 @@ main(int argc, char** argv)
       points = std::stoul(argv[++i]);
     else if (arg == "--seed-offset" && has_value)
       seed_offset = std::uint32_t(std::stoul(argv[++i]));
+    else if (arg == "--draws" && has_value)
+      draws = std::max(1, std::atoi(argv[++i]));
     else if (arg == "--write" && has_value)
       write_dir = argv[++i];
     else if (!arg.empty() && arg[0] != '-')
@@ -147,12 +156,14 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_noise [PSB_DIR] [--kind mesh|cloud] [--levels 0,0.2,0.5,1] "
                    "[--models 1,21,...|--half tune|check] [--points N] [--seed-offset K] "
-                   "[--write DIR]\n";
+                   "[--draws K] [--write DIR]\n";
       return arg == "-h" || arg == "--help" ? 0 : 2;
     }
   }
-  if ((kind != "mesh" && kind != "cloud") || (!half.empty() && half != "tune" && half != "check")) {
-    std::cerr << "bench_noise: --kind is mesh or cloud, --half is tune or check\n";
+  if ((kind != "mesh" && kind != "cloud") || (!half.empty() && half != "tune" && half != "check") ||
+      (draws > 1 && kind != "mesh")) {
+    std::cerr << "bench_noise: --kind is mesh or cloud, --half is tune or check, --draws is for "
+                 "meshes\n";
     return 2;
   }
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
@@ -196,11 +207,15 @@ main(int argc, char** argv)
           std::snprintf(level_name, sizeof level_name, "%g", levels[l]);
           write_path = write_dir + "/" + level_name + "/off/" + stem + ".off";
         }
-        const Result r = kind == "mesh" ? segmentMesh(mesh, levels[l], seed, humans, write_path)
-                                        : segmentCloud(cloud, levels[l], seed, humans);
-        results[l].push_back(r);
-        std::fprintf(stderr, "%s %d sigma %g%%: 1-RI %.4f, %d parts, %.2f s\n", kind.c_str(), id,
-                     levels[l], r.ri, r.parts, r.seconds);
+        for (int d = 0; d < draws; ++d) {
+          Result r = kind == "mesh"
+                         ? segmentMesh(mesh, levels[l], seed, std::uint32_t(d), humans, write_path)
+                         : segmentCloud(cloud, levels[l], seed, humans);
+          r.draw = d;
+          results[l].push_back(r);
+          std::fprintf(stderr, "%s %d sigma %g%% draw %d: 1-RI %.4f, %d parts, %.2f s\n",
+                       kind.c_str(), id, levels[l], d, r.ri, r.parts, r.seconds);
+        }
       }
     }
   }
@@ -210,9 +225,13 @@ main(int argc, char** argv)
   }
 
   std::printf("%s, %zu shapes%s%s\n\n", kind == "mesh" ? "meshes" : "clouds (no normals)",
-              results[0].size(), half.empty() ? "" : ", half ", half.c_str());
-  std::printf("| noise sigma (%% of diagonal) | 1 - RI | parts per shape | median s | max s |\n"
-              "|---|---|---|---|---|\n");
+              results[0].size() / draws, half.empty() ? "" : ", half ", half.c_str());
+  if (draws > 1)
+    std::printf("Mean over %d jitter draws (MeshSegmentation::setJitterSeed 0..%d); the last "
+                "column lists each draw's 1 - RI.\n\n", draws, draws - 1);
+  std::printf("| noise sigma (%% of diagonal) | 1 - RI | parts per shape | median s | max s |%s\n"
+              "|---|---|---|---|---|%s\n", draws > 1 ? " 1 - RI per draw |" : "",
+              draws > 1 ? "---|" : "");
   for (std::size_t l = 0; l < levels.size(); ++l) {
     double ri = 0.0, parts = 0.0;
     std::vector<double> seconds;
@@ -221,8 +240,17 @@ main(int argc, char** argv)
       parts += r.parts / double(results[l].size());
       seconds.push_back(r.seconds);
     }
-    std::printf("| %g | %.4f | %.1f | %.2f | %.2f |\n", levels[l], ri, parts, segmat::bench::median(seconds),
-                *std::max_element(seconds.begin(), seconds.end()));
+    std::printf("| %g | %.4f | %.1f | %.2f | %.2f |", levels[l], ri, parts,
+                segmat::bench::median(seconds), *std::max_element(seconds.begin(), seconds.end()));
+    if (draws > 1) {
+      std::vector<double> per_draw(draws, 0.0);
+      for (const Result& r : results[l])
+        per_draw[r.draw] += r.ri * draws / double(results[l].size());
+      for (int d = 0; d < draws; ++d)
+        std::printf(" %.4f", per_draw[d]);
+      std::printf(" |");
+    }
+    std::printf("\n");
   }
   return 0;
 }

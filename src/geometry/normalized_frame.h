@@ -62,9 +62,8 @@ struct NormalizedFrame
     return p / scale + centre;
   }
 
-  /** \brief The mesh moved into the frame, vertex for vertex, faces as they are: the input's
-   * order is kept, since the samples' index-hashed jitter and the order of equal-cost choices
-   * follow it (docs/robustness.md). */
+  /** \brief The mesh moved into the frame, vertex for vertex, faces as they are (the caller
+   * then puts it into position order: sortMeshByPosition()). */
   TriangleMesh
   toFrame(const TriangleMesh& mesh) const;
 

@@ -327,9 +327,10 @@ VoronoiMat::sample(const TriangleMesh& mesh, double diagonal)
   }
   if (jitter_ > 0.0) {
     const double amplitude = jitter_ * diagonal;
+    const std::uint64_t stream = static_cast<std::uint64_t>(jitter_seed_) << 40;
     for (std::size_t i = 0; i < samples_.size(); ++i)
       for (int k = 0; k < 3; ++k)
-        samples_[i][k] += amplitude * hashToUnit(3 * static_cast<std::uint64_t>(i) + k);
+        samples_[i][k] += amplitude * hashToUnit(stream + 3 * static_cast<std::uint64_t>(i) + k);
   }
   statistics_.num_samples = samples_.size();
   if (samples_.size() < 4) {

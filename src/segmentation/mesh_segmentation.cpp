@@ -138,6 +138,20 @@ MeshSegmentation::getStructuredMatTarget() const
 }
 
 void
+MeshSegmentation::setJitterSeed(std::uint32_t seed)
+{
+  if (seed != estimation_->getJitterSeed())
+    dropComputedMats();
+  estimation_->setJitterSeed(seed);
+}
+
+std::uint32_t
+MeshSegmentation::getJitterSeed() const
+{
+  return estimation_->getJitterSeed();
+}
+
+void
 MeshSegmentation::setNumberOfThreads(unsigned threads)
 {
   estimation_->setNumberOfThreads(threads); // the output does not depend on it: keep the MATs

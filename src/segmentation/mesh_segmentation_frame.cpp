@@ -8,6 +8,7 @@
 #include <segmat/segmentation/mesh_segmentation.h>
 
 #include "../geometry/normalized_frame.h"
+#include "../geometry/position_order.h"
 
 namespace segmat {
 
@@ -15,7 +16,8 @@ struct MeshSegmentation::FrameCache
 {
   TriangleMesh::ConstPtr source;  // the input mesh the copy was made from
   bool principal_axes = false;    // the frame option it was made with
-  TriangleMesh::ConstPtr mesh;    // its copy in the normalised frame
+  TriangleMesh::ConstPtr mesh;    // its copy in the normalised frame, in position order
+  std::vector<int> face_of;       // face k of the copy is input face face_of[k]
   detail::NormalizedFrame frame;
   // Given MATs: the caller's pointers and their frame copies.
   MedialMesh::ConstPtr given_base, given_structured, base, structured;
@@ -36,7 +38,9 @@ MeshSegmentation::segment(std::vector<int>& face_labels)
     cache.source = mesh_;
     cache.principal_axes = principal_axes_;
     cache.frame = detail::NormalizedFrame::of(mesh_->vertices, principal_axes_);
-    cache.mesh = std::make_shared<const TriangleMesh>(cache.frame.toFrame(*mesh_));
+    auto copy = std::make_shared<TriangleMesh>(cache.frame.toFrame(*mesh_));
+    cache.face_of = detail::sortMeshByPosition(*copy);
+    cache.mesh = std::move(copy);
     surface_tree_.reset();
   }
   // The transfer's mesh is set by segmentInFrame: the frame copy, or its denoised version.
@@ -84,7 +88,9 @@ MeshSegmentation::segment(std::vector<int>& face_labels)
   face_labels.clear();
   if (!ok)
     return false;
-  face_labels = std::move(labels); // the frame copy keeps the input's faces
+  face_labels.resize(labels.size());
+  for (std::size_t k = 0; k < labels.size(); ++k)
+    face_labels[cache.face_of[k]] = labels[k];
   face_labels_ = face_labels;
   return true;
 }

@@ -80,6 +80,10 @@ public:
   void setJitter(double relative_jitter) { voronoi_.setJitter(relative_jitter); }
   /** \brief Sample jitter relative to the diagonal. */
   double getJitter() const { return voronoi_.getJitter(); }
+  /** \brief Which deterministic jitter the samples get (VoronoiMat::setJitterSeed; default 0). */
+  void setJitterSeed(std::uint32_t seed) { voronoi_.setJitterSeed(seed); }
+  /** \brief Which deterministic jitter the samples get. */
+  std::uint32_t getJitterSeed() const { return voronoi_.getJitterSeed(); }
 
   /** \brief Surface samples to use instead of sampling the mesh, optionally with their outward
    * unit normals (VoronoiMat::setSurfaceSamples; null, the default, samples the mesh). */

@@ -16,6 +16,7 @@
 
 #include <pcl/PointIndices.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -141,6 +142,19 @@ public:
   /** \brief Threads of the medial-mesh computation. */
   unsigned
   getNumberOfThreads() const;
+
+  /** \brief Which deterministic sample jitter the computed medial meshes use
+   * (VoronoiMat::setJitterSeed; default 0). Every seed is an equally valid draw; the parts of
+   * some shapes depend on it (docs/robustness.md, "Sub-micro displacements"), and segmenting
+   * under a few seeds measures how stable they are. Changing it drops the computed medial
+   * meshes.
+   */
+  void
+  setJitterSeed(std::uint32_t seed);
+
+  /** \brief Which deterministic sample jitter the computed medial meshes use. */
+  std::uint32_t
+  getJitterSeed() const;
 
   /** \brief Also turn the normalised frame onto the mesh's principal axes (default: false).
    *
