@@ -5,8 +5,8 @@
  * bench_invariance: Rand distance between the parts of each mesh and of its transformed copies
  * (bench/shape_variants.h: translated, scaled, rotated, re-ordered, other file formats), per
  * transformation: mean, largest, and the models whose part count changed.
- *   bench_invariance DIR_OR_MESH... [--threads T] [--principal-axes]
- * --principal-axes segments in the principal-axes frame (MeshSegmentation::setPrincipalAxesFrame).
+ *   bench_invariance DIR_OR_MESH... [--threads T] [--input-axes]
+ * --input-axes segments in the meshes' own orientation (MeshSegmentation::setPrincipalAxesFrame(false)).
  * A folder contributes its off/ *.off files (a PSB-style folder) or its own files.
  */
 #include <segmat/segmentation/mesh_segmentation.h>
@@ -30,11 +30,11 @@ main(int argc, char** argv)
 {
   std::vector<std::string> files;
   unsigned threads = 1;
-  bool principal_axes = false;
+  bool principal_axes = true;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--principal-axes")
-      principal_axes = true;
+    if (arg == "--input-axes")
+      principal_axes = false;
     else if (arg == "--threads")
       threads = static_cast<unsigned>(std::max(0, bench::intArgument(argc, argv, i)));
     else if (std::filesystem::is_directory(arg + "/off"))

@@ -15,10 +15,11 @@
  *
  *   build/bin/bench_noise [PSB_DIR] [--kind mesh|cloud] [--levels 0,0.2,0.5,1]
  *                         [--models 1,21,...|--half tune|check] [--points N] [--seed-offset K]
- *                         [--draws K] [--write DIR]
+ *                         [--draws K] [--input-axes] [--write DIR]
  * --draws K (meshes) segments each noisy mesh K times, with jitter seeds 0..K-1
  * (MeshSegmentation::setJitterSeed), and averages: single draws differ by more than many changes
- * one would want to measure (docs/robustness.md).
+ * one would want to measure (docs/robustness.md). --input-axes segments meshes in their own
+ * orientation (MeshSegmentation::setPrincipalAxesFrame(false)).
  * PSB_DIR defaults to ../shared/data/psb-dev. Levels are in percent of the diagonal. --half tune
  * takes ids 1, 21, 41, ... (id mod 20 = 1), --half check ids 6, 26, 46, ... --write DIR writes
  * the noisy meshes as DIR/LEVEL/off/N.off (the input of segmat_mesh or scripts/eval_psb.sh).
@@ -71,7 +72,7 @@ parseList(const std::string& text)
 
 Result
 segmentMesh(const segmat::TriangleMesh& clean, double level, std::uint32_t seed,
-            std::uint32_t draw, const std::vector<std::vector<int>>& humans,
+            std::uint32_t draw, bool principal_axes, const std::vector<std::vector<int>>& humans,
             const std::string& write_path)
 {
   auto input = std::make_shared<segmat::TriangleMesh>(clean);
@@ -85,6 +86,7 @@ segmentMesh(const segmat::TriangleMesh& clean, double level, std::uint32_t seed,
   seg.setInputMesh(input);
   seg.setNumberOfThreads(1);
   seg.setJitterSeed(draw);
+  seg.setPrincipalAxesFrame(principal_axes);
   std::vector<int> labels;
   const auto start = std::chrono::steady_clock::now();
   const bool ok = seg.segment(labels);
@@ -131,6 +133,7 @@ main(int argc, char** argv)
   std::size_t points = 20000;
   std::uint32_t seed_offset = 0;
   int draws = 1;
+  bool principal_axes = true;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const bool has_value = i + 1 < argc;
@@ -147,6 +150,8 @@ main(int argc, char** argv)
       points = std::stoul(argv[++i]);
     else if (arg == "--seed-offset" && has_value)
       seed_offset = std::uint32_t(std::stoul(argv[++i]));
+    else if (arg == "--input-axes")
+      principal_axes = false;
     else if (arg == "--draws" && has_value)
       draws = std::max(1, std::atoi(argv[++i]));
     else if (arg == "--write" && has_value)
@@ -156,7 +161,7 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_noise [PSB_DIR] [--kind mesh|cloud] [--levels 0,0.2,0.5,1] "
                    "[--models 1,21,...|--half tune|check] [--points N] [--seed-offset K] "
-                   "[--draws K] [--write DIR]\n";
+                   "[--draws K] [--input-axes] [--write DIR]\n";
       return arg == "-h" || arg == "--help" ? 0 : 2;
     }
   }
@@ -209,7 +214,8 @@ main(int argc, char** argv)
         }
         for (int d = 0; d < draws; ++d) {
           Result r = kind == "mesh"
-                         ? segmentMesh(mesh, levels[l], seed, std::uint32_t(d), humans, write_path)
+                         ? segmentMesh(mesh, levels[l], seed, std::uint32_t(d), principal_axes,
+                                       humans, write_path)
                          : segmentCloud(cloud, levels[l], seed, humans);
           r.draw = d;
           results[l].push_back(r);

@@ -2,7 +2,7 @@
 # segmat — 3D shape segmentation with the medial axis transform.
 # SPDX-License-Identifier: BSD-3-Clause
 """Quality against the orientation a PSB folder's meshes are given in: 1 - Rand index
-(segmat_eval --psb) of segmat_mesh with its default frame and with --principal-axes, on the
+(segmat_eval --psb) of segmat_mesh in its default principal-axes frame and with --input-axes, on the
 meshes as stored and on copies turned by bench/shape_variants.h's someRotation(); overall and on
 the two halves ids % 20 == 1 and ids % 20 == 6.
     python3 bench/psb_orientation.py [PSB_DIR] [OUT_DIR]
@@ -82,7 +82,7 @@ def scores(folder, flags, name):
 
 print(f"{len(models)} models; 1 - RI (lower is better)")
 print(f"{'frame':<16} {'meshes':<8} {'all':>8} {'id%20=1':>8} {'id%20=6':>8}")
-for frame, flags in (("default", []), ("principal axes", ["--principal-axes"])):
+for frame, flags in (("principal axes", []), ("input axes", ["--input-axes"])):
     for meshes, folder in (("stored", psb), ("turned", turned)):
         name = f"{frame.replace(' ', '_')}_{meshes}"
         print(f"{frame:<16} {meshes:<8} " + " ".join(f"{v:8.4f}" for v in scores(folder, flags, name)))

@@ -74,10 +74,10 @@ run(int argc, char** argv)
               "price concave creases in the surface cut as SEG-MAT does (default:\n"
               "a sharp concave crease is much cheaper to cut than a shallow one)",
               [&] { segmentation.setCreaseModel(CreaseModel::Reference); });
-  parser.flag(kParameters, "--principal-axes",
-              "segment in the mesh's principal-axes orientation: a rotated mesh then\n"
-              "gets the same parts (default: its own orientation; docs/robustness.md)",
-              [&] { segmentation.setPrincipalAxesFrame(true); });
+  parser.flag(kParameters, "--input-axes",
+              "segment in the mesh's own orientation instead of its principal axes\n"
+              "(a rotated mesh may then get other parts; docs/robustness.md)",
+              [&] { segmentation.setPrincipalAxesFrame(false); });
   parser.flag(kOutput, "--boxes",
               "also write PREFIX_boxes.json and PREFIX_boxes.ply: one tight oriented\n"
               "box per part (docs/abstraction.md)", boxes);

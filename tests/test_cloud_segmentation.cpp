@@ -153,17 +153,17 @@ TEST(CloudSegmentation, SphereAndTorusAreOnePart)
   EXPECT_EQ(parts, 1u);
   EXPECT_EQ(std::count(labels.begin(), labels.end(), 0), long(sphere.size()));
   // A torus's medial axis is a closed loop: the region grown from the largest sphere meets
-  // itself around the loop, and for some samplings the merge leaves the loop cut once (a known
-  // limit, docs/robustness.md). Over four samplings: never more than two parts, and most often
-  // one.
+  // itself around the loop, and for some samplings the merge leaves the loop cut once or twice
+  // (a known limit, docs/robustness.md). Over eight samplings: never more than three parts, and
+  // at least six whole.
   int whole = 0;
-  for (std::uint32_t seed = 1; seed <= 4; ++seed) {
+  for (std::uint32_t seed = 1; seed <= 8; ++seed) {
     const SampledCloud torus = torusCloud(10000, seed);
     labels = segmentLabels<pcl::PointNormal>(torus.toCloud<pcl::PointNormal>(), &parts);
-    EXPECT_LE(parts, 2u) << "seed " << seed;
+    EXPECT_LE(parts, 3u) << "seed " << seed;
     whole += parts == 1;
   }
-  EXPECT_GE(whole, 2);
+  EXPECT_GE(whole, 6);
 }
 
 TEST(CloudSegmentation, TeddyAgreesWithTheMeshPath)

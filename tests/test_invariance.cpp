@@ -28,7 +28,7 @@ partCount(const std::vector<int>& labels)
 }
 
 std::vector<int>
-segmentMesh(const TriangleMesh& mesh, bool principal_axes = false)
+segmentMesh(const TriangleMesh& mesh, bool principal_axes = true)
 {
   MeshSegmentation seg;
   seg.setNumberOfThreads(1);
@@ -96,6 +96,31 @@ TEST(Invariance, CloudPartsSurviveMovingScalingAndRotating)
   }
 }
 
+// The same 20 000 points in a shuffled order: the copy is put into position order first, so
+// every point keeps its label exactly.
+TEST(Invariance, ShuffledCloudGivesIdenticalLabels)
+{
+  const TriangleMesh mesh = io::loadOff(std::string(SEGMAT_DATA_DIR) + "/psb346/346.off");
+  const test::SampledCloud sampled = test::sampleMesh(mesh, 20000, 1);
+  std::vector<Eigen::Vector3d> points;
+  for (const Eigen::Vector3f& p : sampled.points)
+    points.push_back(p.cast<double>());
+  const std::vector<int> reference = segmentCloud(points);
+  ASSERT_GE(partCount(reference), 2);
+  std::vector<int> point_of(points.size());
+  std::iota(point_of.begin(), point_of.end(), 0);
+  std::shuffle(point_of.begin(), point_of.end(), std::mt19937(11));
+  std::vector<Eigen::Vector3d> shuffled;
+  for (int i : point_of)
+    shuffled.push_back(points[i]);
+  const std::vector<int> labels = segmentCloud(shuffled);
+  ASSERT_EQ(labels.size(), points.size());
+  std::vector<int> in_original_order(labels.size());
+  for (std::size_t k = 0; k < labels.size(); ++k)
+    in_original_order[point_of[k]] = labels[k];
+  EXPECT_EQ(in_original_order, reference);
+}
+
 // PSB 346 (7 170 faces): every transformation keeps the parts.
 TEST(Invariance, MeshPartsSurviveMovingScalingRotatingReorderingAndFormats)
 {
@@ -115,25 +140,30 @@ TEST(Invariance, MeshPartsSurviveMovingScalingRotatingReorderingAndFormats)
   }
 }
 
-// PSB 246 (8 434 faces): in the input's own orientation a rotation moves part boundaries (Rand
-// distance about 0.017: the Delaunay grid, the jitter and the sampling follow the axes); in the
-// principal-axes frame two rotations give exactly the original labels.
-TEST(Invariance, PrincipalAxesFrameMakesRotationsChangeNothing)
+// PSB 321 and 246: in the default principal-axes frame two rotations give exactly the original
+// labels. In the input's own orientation (setPrincipalAxesFrame(false)) the same rotation moves
+// PSB 321's parts (2 or 4 of them: the Voronoi MAT's grid, jitter and sampling follow the axes).
+TEST(Invariance, RotationsChangeNothingInThePrincipalAxesFrame)
 {
-  const TriangleMesh mesh = io::loadOff(std::string(SEGMAT_DATA_DIR) + "/psb246/246.off");
-  const std::vector<int> reference = segmentMesh(mesh, true);
-  ASSERT_GE(partCount(reference), 2);
   const Eigen::Matrix3d rotations[] = {
       bench::someRotation(),
       Eigen::AngleAxisd(2.5, Eigen::Vector3d(-3, 1, 1).normalized()).toRotationMatrix()};
-  for (const Eigen::Matrix3d& rotation : rotations) {
-    TriangleMesh turned = mesh;
-    for (Eigen::Vector3d& p : turned.vertices)
+  const auto turned = [](const TriangleMesh& mesh, const Eigen::Matrix3d& rotation) {
+    TriangleMesh out = mesh;
+    for (Eigen::Vector3d& p : out.vertices)
       p = rotation * p;
-    EXPECT_EQ(segmentMesh(turned, true), reference);
+    return out;
+  };
+  for (const char* shape : {"psb321/321.off", "psb246/246.off"}) {
+    const TriangleMesh mesh = io::loadOff(std::string(SEGMAT_DATA_DIR) + "/" + shape);
+    const std::vector<int> reference = segmentMesh(mesh);
+    ASSERT_GE(partCount(reference), 2) << shape;
+    for (const Eigen::Matrix3d& rotation : rotations)
+      EXPECT_EQ(segmentMesh(turned(mesh, rotation)), reference) << shape;
   }
-  // Turning the frame is a choice the default leaves alone: the default labels differ.
-  EXPECT_NE(segmentMesh(mesh), reference);
+  const TriangleMesh mesh = io::loadOff(std::string(SEGMAT_DATA_DIR) + "/psb321/321.off");
+  EXPECT_NE(partCount(segmentMesh(turned(mesh, rotations[0]), false)),
+            partCount(segmentMesh(mesh, false)));
 }
 
 // Vertices and faces in a shuffled order, each face's corners rotated: the frame copy is put

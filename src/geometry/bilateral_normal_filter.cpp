@@ -68,19 +68,25 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
       for (int c = 0; c < 3; ++c)
         vertex_faces[faces[f][c]].push_back(int(f));
   }
-  // Neighbours of a face: every other face that shares a vertex with it.
-  std::vector<std::vector<int>> neighbours(nf);
+  // Neighbours of a face: every other face that shares a vertex with it, ascending; face f's
+  // are neighbours[first[f]] .. neighbours[first[f + 1] - 1] (one array: no allocation per face).
+  std::vector<std::size_t> first(nf + 1, 0);
+  std::vector<int> neighbours, around;
   for (std::size_t f = 0; f < nf; ++f) {
+    first[f] = neighbours.size();
     if (!valid[f])
       continue;
-    std::vector<int>& around = neighbours[f];
+    around.clear();
     for (int c = 0; c < 3; ++c)
       around.insert(around.end(), vertex_faces[faces[f][c]].begin(),
                     vertex_faces[faces[f][c]].end());
     std::sort(around.begin(), around.end());
     around.erase(std::unique(around.begin(), around.end()), around.end());
-    around.erase(std::remove(around.begin(), around.end(), int(f)), around.end());
+    for (int j : around)
+      if (j != int(f))
+        neighbours.push_back(j);
   }
+  first[nf] = neighbours.size();
 
   FaceGeometry g;
   faceGeometry(vertices, faces, valid, g);
@@ -88,7 +94,8 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
   double distance_sum = 0.0;
   std::size_t pairs = 0;
   for (std::size_t f = 0; f < nf; ++f)
-    for (int j : neighbours[f]) {
+    for (std::size_t a = first[f]; a < first[f + 1]; ++a) {
+      const int j = neighbours[a];
       int shared = 0;
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b)
@@ -107,13 +114,12 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
   const double still = 1.0 - std::cos(still_degrees * M_PI / 180.0);
 
   // The centroids stay put while the normals are filtered: area × spatial weight once.
-  std::vector<std::vector<double>> fixed(nf);
-  for (std::size_t f = 0; f < nf; ++f) {
-    fixed[f].reserve(neighbours[f].size());
-    for (int j : neighbours[f])
-      fixed[f].push_back(g.areas[j] *
-                         std::exp(-(g.centroids[f] - g.centroids[j]).squaredNorm() * inv_s));
-  }
+  std::vector<double> fixed(neighbours.size());
+  for (std::size_t f = 0; f < nf; ++f)
+    for (std::size_t a = first[f]; a < first[f + 1]; ++a) {
+      const int j = neighbours[a];
+      fixed[a] = g.areas[j] * std::exp(-(g.centroids[f] - g.centroids[j]).squaredNorm() * inv_s);
+    }
   std::vector<Eigen::Vector3d> normals = g.normals, next(nf);
   for (int it = 0; it < max_iterations; ++it) {
     double turned = 0.0;
@@ -124,12 +130,12 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
       if (normals[f].isZero())
         continue;
       Eigen::Vector3d sum = g.areas[f] * normals[f];
-      for (std::size_t a = 0; a < neighbours[f].size(); ++a) {
-        const int j = neighbours[f][a];
+      for (std::size_t a = first[f]; a < first[f + 1]; ++a) {
+        const int j = neighbours[a];
         if (normals[j].isZero())
           continue;
         const double dr = (normals[f] - normals[j]).squaredNorm();
-        sum += fixed[f][a] * std::exp(float(-dr * inv_r)) * normals[j];
+        sum += fixed[a] * std::exp(float(-dr * inv_r)) * normals[j];
       }
       if (sum.norm() > 0.0)
         next[f] = sum.normalized();

@@ -57,12 +57,17 @@ sidedHeightFit(const std::vector<Eigen::Vector3f>& points, int self, const pcl::
       const double r = height[a] - basis[a].dot(coef);
       const double w =
           spatial[a] * std::exp(float(-r * r * inv_band2)); // weights: float precision is plenty
-      normal += w * basis[a] * basis[a].transpose();
+      // The lower triangle only (the matrix is symmetric; mirrored before solving).
+      const Eigen::Matrix<double, 6, 1> wb = w * basis[a];
+      for (int j = 0; j < 6; ++j)
+        for (int i = j; i < 6; ++i)
+          normal(i, j) += wb[i] * basis[a][j];
       rhs += w * height[a] * basis[a];
       total += w;
     }
     if (!(total > 1e-6))
       break;
+    normal.triangularView<Eigen::StrictlyUpper>() = normal.transpose();
     for (int c = 3; c < 6; ++c)
       normal(c, c) += 1e-3 * total;
     const Eigen::Matrix<double, 6, 1> next = normal.ldlt().solve(rhs);

@@ -10,6 +10,7 @@
 #include <segmat/segmentation/structure_tags.h>
 
 #include "../geometry/normalized_frame.h"
+#include "../geometry/position_order.h"
 #include "cloud_segmentation_impl.hpp"
 #include "cloud_segmentation_steps.h"
 
@@ -184,15 +185,29 @@ segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
 }
 
 CloudFrame
-moveToNormalizedFrame(pcl::PointCloud<pcl::PointNormal>& cloud)
+moveToNormalizedFrame(pcl::PointCloud<pcl::PointNormal>& cloud, const pcl::Indices& indices)
 {
-  std::vector<Eigen::Vector3d> points(cloud.size());
-  for (std::size_t i = 0; i < cloud.size(); ++i)
+  const std::size_t n = cloud.size();
+  std::vector<Eigen::Vector3d> points(n);
+  for (std::size_t i = 0; i < n; ++i)
     points[i] = cloud[i].getVector3fMap().cast<double>();
   const NormalizedFrame normalized = NormalizedFrame::of(points);
-  for (std::size_t i = 0; i < cloud.size(); ++i)
-    cloud[i].getVector3fMap() = normalized.toFrame(points[i]).cast<float>();
+  for (std::size_t i = 0; i < n; ++i) // ordered as the later steps see them: in float
+    points[i] = normalized.toFrame(points[i]).cast<float>().cast<double>();
+  const std::vector<int> order = positionOrder(points);
+  pcl::PointCloud<pcl::PointNormal> moved;
+  moved.resize(n);
   CloudFrame frame;
+  frame.indices.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    moved[k] = cloud[order[k]];
+    moved[k].getVector3fMap() = points[order[k]].cast<float>();
+    frame.indices[k] = k < indices.size() ? indices[order[k]] : static_cast<pcl::index_t>(order[k]);
+  }
+  moved.width = static_cast<std::uint32_t>(n);
+  moved.height = 1;
+  moved.is_dense = cloud.is_dense;
+  cloud.swap(moved);
   frame.centre = normalized.centre;
   frame.scale = normalized.scale;
   return frame;

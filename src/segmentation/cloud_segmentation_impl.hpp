@@ -59,11 +59,12 @@ CloudSegmentation<PointT>::computeField()
   stats_ = MesoSkeletonStatistics();
   working_.reset(new pcl::PointCloud<pcl::PointNormal>);
   input_to_working_.clear();
-  // Every stage works on a copy in the normalised frame (centred, scaled by a power of two), so
-  // that where the cloud lies and how large it is cannot change its parts.
+  // Every stage works on a copy in the normalised frame (centred, scaled by a power of two) and
+  // in position order, so that where the cloud lies, how large it is and the order of its points
+  // cannot change its parts.
   pcl::PointCloud<pcl::PointNormal>::Ptr cloud(new pcl::PointCloud<pcl::PointNormal>);
   const bool has_normals = detail::copyToPointNormal(*input_, *indices_, *cloud);
-  const detail::CloudFrame frame = detail::moveToNormalizedFrame(*cloud);
+  const detail::CloudFrame frame = detail::moveToNormalizedFrame(*cloud, *indices_);
   const MesoSkeletonParameters& params = skeleton_estimation_.getParameters();
   const bool use_normals = has_normals && params.use_input_normals;
   std::vector<int> working_indices, copy_to_working;
@@ -97,9 +98,9 @@ CloudSegmentation<PointT>::computeField()
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
   }
-  input_to_working_ = detail::inputToWorking(input_->size(), *indices_, copy_to_working);
+  input_to_working_ = detail::inputToWorking(input_->size(), frame.indices, copy_to_working);
   // What the caller reads back is in the input's frame (the graph stays in the normalised one).
-  detail::moveFromNormalizedFrame(frame, *indices_, base, structured, *skeleton_, stats_);
+  detail::moveFromNormalizedFrame(frame, frame.indices, base, structured, *skeleton_, stats_);
   if (!base.empty())
     base_ = std::make_shared<const MedialMesh>(std::move(base));
   if (!structured.empty())

@@ -83,14 +83,18 @@ struct CloudFrame
 {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   double scale = 1.0;
+  pcl::Indices indices; ///< the input index of each point of the copy, in the copy's order
 };
 
 /** \brief Moves the points of \a cloud into their normalised frame (centred on the bounding
  * box of the finite points, scaled by a power of two to a diagonal in [1/√2, √2); normals
- * unchanged). A cloud scaled by 2^k lands on the very same numbers.
- * \return the frame */
+ * unchanged) and into position order (detail::positionOrder), so that neither where the cloud
+ * lies, nor its size, nor the order of its points changes what follows. A cloud scaled by 2^k
+ * lands on the very same numbers.
+ * \param[in,out] cloud the copy of the input's points \a indices (point c is input indices[c])
+ * \return the frame, with the input index of each point of the reordered copy */
 CloudFrame
-moveToNormalizedFrame(pcl::PointCloud<pcl::PointNormal>& cloud);
+moveToNormalizedFrame(pcl::PointCloud<pcl::PointNormal>& cloud, const pcl::Indices& indices);
 
 /** \brief Maps what a segmentation in \a frame computed back to the input's frame: medial
  * meshes, the meso-skeleton (its surface and contact indices from the copy's points to the

@@ -156,14 +156,14 @@ public:
   std::uint32_t
   getJitterSeed() const;
 
-  /** \brief Also turn the normalised frame onto the mesh's principal axes (default: false).
+  /** \brief Turn the normalised frame onto the mesh's principal axes (default: true).
    *
    * Every sampling, jitter and Delaunay step then sees a rotated input as it sees the original,
-   * and a rotation changes no label beyond what rounding does (on psb-dev: none at all; shapes
-   * without unique principal axes, e.g. with equal principal variances, are the exception).
-   * Off by default because it segments differently from the input's own orientation, and on
-   * psb-dev (meshes in their modelled, axis-aligned pose) that was slightly worse
-   * (docs/robustness.md, docs/benchmarks.md). Changing it drops the computed medial meshes.
+   * and a rotation changes no label beyond what rounding does (on psb-dev: one shape, by 0.004
+   * of Rand distance; shapes without unique principal axes, e.g. with equal principal variances,
+   * are the exception). Off, the mesh is segmented in its own orientation: the Voronoi MAT's
+   * axis-aligned steps then follow the input's axes, and a rotation moves part boundaries like
+   * another jitter draw does (docs/robustness.md). Changing it drops the computed medial meshes.
    */
   void
   setPrincipalAxesFrame(bool enable);
@@ -190,11 +190,10 @@ public:
    *         volume), or a stage fails.
    *
    * The mesh is segmented in a normalised frame: centred on its bounding box, scaled by a power
-   * of two to a diagonal near 1 (docs/robustness.md), and turned onto its principal axes with
-   * setPrincipalAxesFrame(true). Translating or scaling the input therefore changes nothing
-   * beyond the input's own rounding; a power-of-two scale changes no label; in the
-   * principal-axes frame a rotation changes none either (shapes without unique principal axes
-   * aside). Labels, parts and the medial meshes
+   * of two to a diagonal near 1 (docs/robustness.md), turned onto its principal axes (unless
+   * setPrincipalAxesFrame(false)) and put into position order. Translating, scaling or rotating
+   * the input therefore changes nothing beyond the input's own rounding (shapes without unique
+   * principal axes aside); a power-of-two scale and re-ordering change no label. Labels, parts and the medial meshes
    * returned are in the input's frame and order; getGraph() is in the normalised frame.
    */
   bool
@@ -268,7 +267,7 @@ private:
   // Computes base_ and structured_ when neither was given; mats_computed_ says they are its.
   std::shared_ptr<MedialMeshEstimation> estimation_;
   bool mats_computed_ = false;
-  bool principal_axes_ = false;
+  bool principal_axes_ = true;
 
   // The field: recomputed only when an input changes.
   MatGraph::Ptr graph_;
