@@ -53,17 +53,25 @@ segmentCloud(const std::vector<Eigen::Vector3d>& points)
   return seg.getLabels();
 }
 
+/** 20 000 points sampled from PSB 346 (seed 1). */
+std::vector<Eigen::Vector3d>
+cloudOf346(TriangleMesh& mesh)
+{
+  mesh = io::loadOff(std::string(SEGMAT_DATA_DIR) + "/psb346/346.off");
+  std::vector<Eigen::Vector3d> points;
+  for (const Eigen::Vector3f& p : test::sampleMesh(mesh, 20000, 1).points)
+    points.push_back(p.cast<double>());
+  return points;
+}
+
 } // namespace
 
 // 20 000 points sampled from PSB 346, normals estimated: moved far away, scaled by 10^±3 or
 // rotated, the cloud keeps its parts; scaled by a power of two, every label.
 TEST(Invariance, CloudPartsSurviveMovingScalingAndRotating)
 {
-  const TriangleMesh mesh = io::loadOff(std::string(SEGMAT_DATA_DIR) + "/psb346/346.off");
-  const test::SampledCloud sampled = test::sampleMesh(mesh, 20000, 1);
-  std::vector<Eigen::Vector3d> points;
-  for (const Eigen::Vector3f& p : sampled.points)
-    points.push_back(p.cast<double>());
+  TriangleMesh mesh;
+  const std::vector<Eigen::Vector3d> points = cloudOf346(mesh);
   const std::vector<int> reference = segmentCloud(points);
   ASSERT_GE(partCount(reference), 2);
   const Eigen::Vector3d far = 1000.0 * mesh.boundingBoxDiagonal() * Eigen::Vector3d(1, -2, 3);
@@ -100,11 +108,8 @@ TEST(Invariance, CloudPartsSurviveMovingScalingAndRotating)
 // every point keeps its label exactly.
 TEST(Invariance, ShuffledCloudGivesIdenticalLabels)
 {
-  const TriangleMesh mesh = io::loadOff(std::string(SEGMAT_DATA_DIR) + "/psb346/346.off");
-  const test::SampledCloud sampled = test::sampleMesh(mesh, 20000, 1);
-  std::vector<Eigen::Vector3d> points;
-  for (const Eigen::Vector3f& p : sampled.points)
-    points.push_back(p.cast<double>());
+  TriangleMesh mesh;
+  const std::vector<Eigen::Vector3d> points = cloudOf346(mesh);
   const std::vector<int> reference = segmentCloud(points);
   ASSERT_GE(partCount(reference), 2);
   std::vector<int> point_of(points.size());

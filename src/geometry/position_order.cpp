@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <utility>
 
 namespace segmat {
 namespace detail {
@@ -29,14 +30,20 @@ positionOrder(const std::vector<Eigen::Vector3d>& points)
   const double cells = std::ldexp(1.0, 30) / extent;
   const double offset = 0.6180339887498949; // the golden ratio's fraction
   constexpr std::int64_t kLast = std::numeric_limits<std::int64_t>::max();
-  std::vector<std::array<std::int64_t, 3>> cell(n);
-  for (int i = 0; i < n; ++i)
+  // (cell, input index): sorting these whole orders equal cells by input index, as a stable
+  // sort would, without an indirection per comparison.
+  std::vector<std::pair<std::array<std::int64_t, 3>, int>> keyed(n);
+  for (int i = 0; i < n; ++i) {
+    keyed[i].second = i;
     for (int k = 0; k < 3; ++k)
-      cell[i][k] = points[i].allFinite()
-                       ? static_cast<std::int64_t>(
-                             std::floor((points[i][k] - box.min()[k]) * cells + offset))
-                       : kLast;
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cell[a] < cell[b]; });
+      keyed[i].first[k] = points[i].allFinite()
+                              ? static_cast<std::int64_t>(
+                                    std::floor((points[i][k] - box.min()[k]) * cells + offset))
+                              : kLast;
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (int i = 0; i < n; ++i)
+    order[i] = keyed[i].second;
   return order;
 }
 
