@@ -57,7 +57,9 @@ sidedHeightFit(const std::vector<Eigen::Vector3f>& points, int self, const pcl::
       const double r = height[a] - basis[a].dot(coef);
       const double w =
           spatial[a] * std::exp(float(-r * r * inv_band2)); // weights: float precision is plenty
-      // The lower triangle only (the matrix is symmetric; mirrored before solving).
+      // The lower triangle only (the matrix is symmetric). Written out rather than
+      // selfadjointView().rankUpdate(), which rounds w·b_col·b_row instead of w·b_row·b_col
+      // and so would move the labels of noisy meshes.
       const Eigen::Matrix<double, 6, 1> wb = w * basis[a];
       for (int j = 0; j < 6; ++j)
         for (int i = j; i < 6; ++i)
@@ -67,10 +69,10 @@ sidedHeightFit(const std::vector<Eigen::Vector3f>& points, int self, const pcl::
     }
     if (!(total > 1e-6))
       break;
-    normal.triangularView<Eigen::StrictlyUpper>() = normal.transpose();
     for (int c = 3; c < 6; ++c)
       normal(c, c) += 1e-3 * total;
-    const Eigen::Matrix<double, 6, 1> next = normal.ldlt().solve(rhs);
+    const Eigen::Matrix<double, 6, 1> next =
+        normal.selfadjointView<Eigen::Lower>().ldlt().solve(rhs);
     if (!next.allFinite())
       break;
     coef = next;

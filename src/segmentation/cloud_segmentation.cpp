@@ -202,7 +202,7 @@ moveToNormalizedFrame(pcl::PointCloud<pcl::PointNormal>& cloud, const pcl::Indic
   for (std::size_t k = 0; k < n; ++k) {
     moved[k] = cloud[order[k]];
     moved[k].getVector3fMap() = points[order[k]].cast<float>();
-    frame.indices[k] = k < indices.size() ? indices[order[k]] : static_cast<pcl::index_t>(order[k]);
+    frame.indices[k] = indices[order[k]];
   }
   moved.width = static_cast<std::uint32_t>(n);
   moved.height = 1;
