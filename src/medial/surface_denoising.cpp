@@ -5,6 +5,7 @@
 #include "surface_denoising.h"
 
 #include "../geometry/bilateral_normal_filter.h"
+#include "../geometry/tangential_relaxation.h"
 #include "local_fit.h"
 
 #include <algorithm>
@@ -507,6 +508,10 @@ denoiseMeshSurface(std::vector<Eigen::Vector3d>& vertices,
   result.normal_iterations = bilateralNormalFilter(vertices, faces, kRangeSigma, kNormalIterations,
                                                    kStillDegrees, kVertexIterations, threads)
                                  .normal_iterations;
+  // The passes and the filter move vertices across the surface only; the noise along it stays
+  // and stretches edges, and the sampler would fill them with samples that make the MAT (and
+  // with it the structured MAT's target) grow with the noise. Two σ undoes most of it.
+  relaxTangentially(vertices, faces, 2.0 * result.noise.sigma, 5, threads);
   return result;
 }
 

@@ -121,7 +121,8 @@ medianFaceTurn(const std::vector<Eigen::Vector3d>& vertices,
  * close = two rings around a vertex, wide = the rings until they hold \a k vertices (at most
  * three rings). Edges never join the two sides of a thin wall, so a wall thinner than the noise
  * keeps both of its sides. Then bilateralNormalFilter() gives back the creases that the
- * quadratic fits rounded. A mesh found clean is left exactly as it is.
+ * quadratic fits rounded, and relaxTangentially() (at most 2 σ per vertex) evens out the
+ * spacing that the noise along the surface left. A mesh found clean is left exactly as it is.
  */
 SurfaceDenoising
 denoiseMeshSurface(std::vector<Eigen::Vector3d>& vertices,

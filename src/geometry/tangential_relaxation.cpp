@@ -1,0 +1,86 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "tangential_relaxation.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+
+namespace segmat {
+namespace detail {
+
+void
+relaxTangentially(std::vector<Eigen::Vector3d>& vertices,
+                  const std::vector<Eigen::Vector3i>& faces, double max_move, int iterations,
+                  int threads)
+{
+  const long nv = static_cast<long>(vertices.size());
+  // Edge neighbours and incident faces of each vertex, as sorted, duplicate-free lists.
+  std::vector<std::vector<int>> ring(nv), incident(nv);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const Eigen::Vector3i& t = faces[f];
+    if (t.minCoeff() < 0 || t.maxCoeff() >= nv || t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+      continue;
+    for (int c = 0; c < 3; ++c) {
+      incident[t[c]].push_back(static_cast<int>(f));
+      ring[t[c]].push_back(t[(c + 1) % 3]);
+      ring[t[c]].push_back(t[(c + 2) % 3]);
+    }
+  }
+  for (auto& r : ring) {
+    std::sort(r.begin(), r.end());
+    r.erase(std::unique(r.begin(), r.end()), r.end());
+  }
+  constexpr double kFlatEigenvalue = 0.03;
+  const std::vector<Eigen::Vector3d> start = vertices;
+  std::vector<Eigen::Vector3d> area_normals(faces.size()), moved(nv);
+  for (int it = 0; it < iterations; ++it) {
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      const Eigen::Vector3i& t = faces[f];
+      area_normals[f] = Eigen::Vector3d::Zero();
+      if (t.minCoeff() >= 0 && t.maxCoeff() < nv)
+        area_normals[f] =
+            0.5 * (vertices[t[1]] - vertices[t[0]]).cross(vertices[t[2]] - vertices[t[0]]);
+    }
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (long v = 0; v < nv; ++v) {
+      moved[v] = vertices[v];
+      if (ring[v].empty())
+        continue;
+      Eigen::Matrix3d tensor = Eigen::Matrix3d::Zero();
+      for (int f : incident[v]) {
+        const double area = area_normals[f].norm();
+        if (area > 0.0)
+          tensor += area_normals[f] * area_normals[f].transpose() / area; // a n nᵀ
+      }
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+      eigen.computeDirect(tensor);
+      const Eigen::Vector3d& values = eigen.eigenvalues(); // ascending
+      if (!(values[2] > 0.0))
+        continue;
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      for (int u : ring[v])
+        mean += vertices[u];
+      const Eigen::Vector3d offset = mean / double(ring[v].size()) - vertices[v];
+      Eigen::Vector3d step = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 2; ++k)
+        if (values[k] < kFlatEigenvalue * values[2]) {
+          const Eigen::Vector3d e = eigen.eigenvectors().col(k);
+          step += e * e.dot(offset);
+        }
+      Eigen::Vector3d to = vertices[v] + 0.5 * step;
+      const Eigen::Vector3d from_start = to - start[v];
+      const double distance = from_start.norm();
+      if (distance > max_move)
+        to = start[v] + from_start * (max_move / distance);
+      moved[v] = to;
+    }
+    vertices.swap(moved);
+  }
+}
+
+} // namespace detail
+} // namespace segmat
