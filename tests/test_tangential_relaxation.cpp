@@ -81,6 +81,36 @@ TEST(TangentialRelaxation, ShakenBoxGetsEvenSpacingBackOnItsSides)
   }
 }
 
+// The same box without its top (z = 1) is open: the rim's vertices have neighbours on one side
+// only and must stay, or the hole would widen; the other vertices still move.
+TEST(TangentialRelaxation, RimOfAnOpenBoxStays)
+{
+  TriangleMesh mesh = segmat::test::box({0, 0, 0}, {1, 1, 1}, 12);
+  std::vector<Eigen::Vector3i> kept;
+  for (const Eigen::Vector3i& f : mesh.faces) {
+    bool top = true;
+    for (int c = 0; c < 3; ++c)
+      top = top && std::abs(mesh.vertices[f[c]].z() - 1.0) < 1e-12;
+    if (!top)
+      kept.push_back(f);
+  }
+  mesh.faces = kept;
+  shakeAlongSides(mesh, 0.3 * kSpacing, 13);
+  const std::vector<Eigen::Vector3d> start = mesh.vertices;
+  segmat::detail::relaxTangentially(mesh.vertices, mesh.faces, 1.0, 5, 1);
+  int rim = 0, moved = 0;
+  for (std::size_t i = 0; i < start.size(); ++i) {
+    if (std::abs(start[i].z() - 1.0) < 1e-12) {
+      ++rim;
+      EXPECT_EQ(mesh.vertices[i], start[i]) << "rim vertex " << i;
+    }
+    else if (mesh.vertices[i] != start[i])
+      ++moved;
+  }
+  EXPECT_EQ(rim, 4 * 12 + 11 * 11); // the top's vertices: its rim (48) and its inner grid (unused)
+  EXPECT_GT(moved, 5 * 11 * 11);     // at least the five sides' inner vertices
+}
+
 // No vertex ends farther than max_move from where it started, and the result does not depend on
 // the thread count.
 TEST(TangentialRelaxation, MovesAtMostTheAllowedDistanceOnAnyThreadCount)

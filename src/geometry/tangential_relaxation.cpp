@@ -34,6 +34,24 @@ relaxTangentially(std::vector<Eigen::Vector3d>& vertices,
     std::sort(r.begin(), r.end());
     r.erase(std::unique(r.begin(), r.end()), r.end());
   }
+  // A vertex on an edge of one face (a hole's rim) or of three and more (non-manifold) stays:
+  // its neighbours' mean lies off to one side, and moving it would widen the hole.
+  std::vector<std::pair<int, int>> edges;
+  for (const Eigen::Vector3i& t : faces)
+    if (t.minCoeff() >= 0 && t.maxCoeff() < nv && t[0] != t[1] && t[1] != t[2] && t[0] != t[2])
+      for (int c = 0; c < 3; ++c)
+        edges.emplace_back(std::min(t[c], t[(c + 1) % 3]), std::max(t[c], t[(c + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t a = 0; a < edges.size();) {
+    std::size_t b = a + 1;
+    while (b < edges.size() && edges[b] == edges[a])
+      ++b;
+    if (b - a != 2) {
+      ring[edges[a].first].clear();
+      ring[edges[a].second].clear();
+    }
+    a = b;
+  }
   constexpr double kFlatEigenvalue = 0.03;
   const std::vector<Eigen::Vector3d> start = vertices;
   std::vector<Eigen::Vector3d> area_normals(faces.size()), moved(nv);

@@ -24,7 +24,8 @@ namespace detail {
  * smooth vertex moves in its tangent plane, a crease vertex along its crease, a corner not at
  * all). A vertex never ends farther than \a max_move from where it started: tangential noise is
  * of the size of the noise, and a larger move would only redistribute a triangulation that was
- * uneven by design. Vertices of no face stay where they are.
+ * uneven by design. Vertices of no face, and vertices on a boundary or non-manifold edge, stay
+ * where they are.
  */
 void
 relaxTangentially(std::vector<Eigen::Vector3d>& vertices,
