@@ -4,10 +4,13 @@
  */
 #include "tangential_relaxation.h"
 
+#include "edge_records.h"
+
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 
 namespace segmat {
 namespace detail {
@@ -18,40 +21,39 @@ relaxTangentially(std::vector<Eigen::Vector3d>& vertices,
                   int threads)
 {
   const long nv = static_cast<long>(vertices.size());
-  // Edge neighbours and incident faces of each vertex, as sorted, duplicate-free lists.
+  // Incident faces of each vertex, and every face side as an (smaller, larger) edge record.
   std::vector<std::vector<int>> ring(nv), incident(nv);
+  std::vector<std::array<int, 2>> sides;
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const Eigen::Vector3i& t = faces[f];
     if (t.minCoeff() < 0 || t.maxCoeff() >= nv || t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
       continue;
     for (int c = 0; c < 3; ++c) {
       incident[t[c]].push_back(static_cast<int>(f));
-      ring[t[c]].push_back(t[(c + 1) % 3]);
-      ring[t[c]].push_back(t[(c + 2) % 3]);
+      sides.push_back({std::min(t[c], t[(c + 1) % 3]), std::max(t[c], t[(c + 1) % 3])});
     }
   }
-  for (auto& r : ring) {
-    std::sort(r.begin(), r.end());
-    r.erase(std::unique(r.begin(), r.end()), r.end());
-  }
-  // A vertex on an edge of one face (a hole's rim) or of three and more (non-manifold) stays:
-  // its neighbours' mean lies off to one side, and moving it would widen the hole.
-  std::vector<std::pair<int, int>> edges;
-  for (const Eigen::Vector3i& t : faces)
-    if (t.minCoeff() >= 0 && t.maxCoeff() < nv && t[0] != t[1] && t[1] != t[2] && t[0] != t[2])
-      for (int c = 0; c < 3; ++c)
-        edges.emplace_back(std::min(t[c], t[(c + 1) % 3]), std::max(t[c], t[(c + 1) % 3]));
-  std::sort(edges.begin(), edges.end());
-  for (std::size_t a = 0; a < edges.size();) {
+  // Edge neighbours from the distinct edges. A vertex on an edge of one face (a hole's rim) or
+  // of three and more (non-manifold) stays: its neighbours' mean lies off to one side, and
+  // moving it would widen the hole.
+  sortEdgeRecords(sides, static_cast<int>(nv));
+  std::vector<char> pinned(nv, 0);
+  for (std::size_t a = 0; a < sides.size();) {
     std::size_t b = a + 1;
-    while (b < edges.size() && edges[b] == edges[a])
+    while (b < sides.size() && sides[b] == sides[a])
       ++b;
-    if (b - a != 2) {
-      ring[edges[a].first].clear();
-      ring[edges[a].second].clear();
-    }
+    const int u = sides[a][0], v = sides[a][1];
+    ring[u].push_back(v);
+    ring[v].push_back(u);
+    if (b - a != 2)
+      pinned[u] = pinned[v] = 1;
     a = b;
   }
+  for (long v = 0; v < nv; ++v)
+    if (pinned[v])
+      ring[v].clear();
+    else
+      std::sort(ring[v].begin(), ring[v].end());
   constexpr double kFlatEigenvalue = 0.03;
   const std::vector<Eigen::Vector3d> start = vertices;
   std::vector<Eigen::Vector3d> area_normals(faces.size()), moved(nv);
