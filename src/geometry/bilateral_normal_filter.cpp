@@ -55,8 +55,8 @@ faceGeometry(const std::vector<Eigen::Vector3d>& vertices,
 
 NormalFiltering
 bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
-                      const std::vector<Eigen::Vector3i>& faces, double range_sigma,
-                      int max_iterations, double still_degrees, int vertex_iterations, int threads)
+                      const std::vector<Eigen::Vector3i>& faces,
+                      const NormalFilterSettings& settings, int threads)
 {
   NormalFiltering result;
   const std::size_t nv = vertices.size(), nf = faces.size();
@@ -93,6 +93,7 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
   // σ_s from the faces that share an edge (two vertices).
   double distance_sum = 0.0;
   std::size_t pairs = 0;
+  std::vector<double> chords; // |n_f − n_j| of faces sharing an edge
   for (std::size_t f = 0; f < nf; ++f)
     for (std::size_t a = first[f]; a < first[f + 1]; ++a) {
       const int j = neighbours[a];
@@ -103,6 +104,8 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
       if (shared == 2) {
         distance_sum += (g.centroids[f] - g.centroids[j]).norm();
         ++pairs;
+        if (settings.range_from_normals && !g.normals[f].isZero() && !g.normals[j].isZero())
+          chords.push_back((g.normals[f] - g.normals[j]).norm());
       }
     }
   if (pairs == 0)
@@ -110,8 +113,14 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
   const double sigma_s = distance_sum / double(pairs);
   result.spatial_sigma = sigma_s;
   const double inv_s = 1.0 / (2.0 * sigma_s * sigma_s);
+  double range_sigma = settings.range_sigma;
+  if (!chords.empty()) {
+    std::nth_element(chords.begin(), chords.begin() + chords.size() / 2, chords.end());
+    range_sigma = std::max(range_sigma, chords[chords.size() / 2]);
+  }
+  result.range_sigma = range_sigma;
   const double inv_r = 1.0 / (2.0 * range_sigma * range_sigma);
-  const double still = 1.0 - std::cos(still_degrees * M_PI / 180.0);
+  const double still = 1.0 - std::cos(settings.still_degrees * M_PI / 180.0);
 
   // The centroids stay put while the normals are filtered: area × spatial weight once.
   std::vector<double> fixed(neighbours.size());
@@ -121,7 +130,7 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
       fixed[a] = g.areas[j] * std::exp(-(g.centroids[f] - g.centroids[j]).squaredNorm() * inv_s);
     }
   std::vector<Eigen::Vector3d> normals = g.normals, next(nf);
-  for (int it = 0; it < max_iterations; ++it) {
+  for (int it = 0; it < settings.max_iterations; ++it) {
     double turned = 0.0;
     int counted = 0;
 #pragma omp parallel for schedule(static) num_threads(threads) reduction(+ : turned, counted)
@@ -150,7 +159,7 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
 
   // Vertices onto the planes of their faces (Jacobi steps: the result is independent of order).
   std::vector<Eigen::Vector3d> moved(nv);
-  for (int it = 0; it < vertex_iterations; ++it) {
+  for (int it = 0; it < settings.vertex_iterations; ++it) {
     faceGeometry(vertices, faces, valid, g);
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (long v = 0; v < long(nv); ++v) {

@@ -487,27 +487,31 @@ denoiseMeshSurface(std::vector<Eigen::Vector3d>& vertices,
   for (std::size_t i = 0; i < vertices.size(); ++i)
     positions[i] = vertices[i].cast<float>();
   RingNeighbourhoods neighbourhoods(positions.size(), faces, k);
-  if (result.face_turn_degrees < noisy_degrees) {
-    // Clean: only the estimate, for the report.
-    neighbourhoods.update(positions);
-    result.noise =
-        estimateSurfaceNoise(positions, neighbourhoods, estimateStride(positions.size()), threads);
-    return result;
-  }
-  const double turn = result.face_turn_degrees;
+  neighbourhoods.update(positions);
+  result.noise =
+      estimateSurfaceNoise(positions, neighbourhoods, estimateStride(positions.size()), threads);
+  if (result.face_turn_degrees < noisy_degrees)
+    return result; // clean: only the estimate, for the report
+  const SurfaceDenoising found = result;
   neighbourhoods.precompute();
+  // The passes fit with a residual band of 1.5 σ̂ and round off whatever is smaller. Bilateral
+  // normal filtering first, with σ_r as wide as the turn that the noise puts between adjacent
+  // faces, removes most of the noise; the passes then fit with the band of what is left, and
+  // the surface ends closer to the clean one (docs/noise.md).
+  NormalFilterSettings first;
+  first.range_from_normals = true;
+  bilateralNormalFilter(vertices, faces, first, threads);
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    positions[i] = vertices[i].cast<float>();
   result = denoiseSurface(positions, neighbourhoods, max_passes, threads, 0.0);
-  result.face_turn_degrees = turn;
+  result.noise = found.noise; // the input's noise, not what the filter left
+  result.face_turn_degrees = found.face_turn_degrees;
   for (std::size_t i = 0; i < vertices.size(); ++i)
     vertices[i] = positions[i].cast<double>();
   // The quadratic passes leave CAD faces and the rims of thin parts wavy and their creases
-  // rounded. Bilateral normal filtering flattens what is nearly flat and keeps every turn much
-  // larger than its range σ (0.35 ≈ 20°, Zheng et al.'s value), so faces become planes again.
-  constexpr double kRangeSigma = 0.35, kStillDegrees = 0.5;
-  constexpr int kNormalIterations = 20, kVertexIterations = 10;
-  result.normal_iterations = bilateralNormalFilter(vertices, faces, kRangeSigma, kNormalIterations,
-                                                   kStillDegrees, kVertexIterations, threads)
-                                 .normal_iterations;
+  // rounded. Bilateral normal filtering with the fixed σ_r flattens what is nearly flat and
+  // keeps every turn much larger than 20°, so faces become planes again.
+  result.normal_iterations = bilateralNormalFilter(vertices, faces, {}, threads).normal_iterations;
   // The passes and the filter move vertices across the surface only; the noise along it stays
   // and stretches edges, and the sampler would fill them with samples that make the MAT (and
   // with it the structured MAT's target) grow with the noise. Two σ undoes most of it.

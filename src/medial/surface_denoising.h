@@ -120,9 +120,11 @@ medianFaceTurn(const std::vector<Eigen::Vector3d>& vertices,
 /** \brief denoiseSurface() of a mesh's vertices when medianFaceTurn() reaches \a noisy_degrees:
  * close = two rings around a vertex, wide = the rings until they hold \a k vertices (at most
  * three rings). Edges never join the two sides of a thin wall, so a wall thinner than the noise
- * keeps both of its sides. Then bilateralNormalFilter() gives back the creases that the
- * quadratic fits rounded, and relaxTangentially() (at most 2 σ per vertex) evens out the
- * spacing that the noise along the surface left. A mesh found clean is left exactly as it is.
+ * keeps both of its sides. bilateralNormalFilter() runs before the passes, with σ_r from the
+ * faces' normals (NormalFilterSettings::range_from_normals), and after them with the fixed σ_r,
+ * which gives back the creases that the quadratic fits rounded; relaxTangentially() (at most
+ * 2 σ per vertex) then evens out the spacing that the noise along the surface left. A mesh found
+ * clean is left exactly as it is.
  */
 SurfaceDenoising
 denoiseMeshSurface(std::vector<Eigen::Vector3d>& vertices,
