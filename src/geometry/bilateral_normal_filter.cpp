@@ -160,7 +160,12 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
   // Vertices onto the planes of their faces (Jacobi steps: the result is independent of order).
   std::vector<Eigen::Vector3d> moved(nv);
   for (int it = 0; it < settings.vertex_iterations; ++it) {
-    faceGeometry(vertices, faces, valid, g);
+    // Only the centroids move with the vertices; the normals are the filtered ones.
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (long f = 0; f < long(nf); ++f)
+      if (valid[f])
+        g.centroids[f] =
+            (vertices[faces[f][0]] + vertices[faces[f][1]] + vertices[faces[f][2]]) / 3.0;
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (long v = 0; v < long(nv); ++v) {
       moved[v] = vertices[v];
