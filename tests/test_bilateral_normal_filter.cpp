@@ -135,4 +135,19 @@ TEST(BilateralNormalFilter, RangeFromTheNormalsSmoothsHeavyNoise)
   EXPECT_LT(largest, 2e-4);
 }
 
+// The same vertices on one thread and on two (the stopping test sums the faces' turns in face
+// order, whatever the thread count).
+TEST(BilateralNormalFilter, SameResultOnOneAndTwoThreads)
+{
+  TriangleMesh one = segmat::test::box({0, 0, 0}, {1, 1, 1}, 12);
+  addNoise(one, 0.4 / 12.0, 9);
+  TriangleMesh two = one;
+  segmat::detail::NormalFilterSettings settings;
+  settings.range_from_normals = true;
+  const auto a = segmat::detail::bilateralNormalFilter(one.vertices, one.faces, settings, 1);
+  const auto b = segmat::detail::bilateralNormalFilter(two.vertices, two.faces, settings, 2);
+  EXPECT_EQ(a.normal_iterations, b.normal_iterations);
+  EXPECT_EQ(one.vertices, two.vertices);
+}
+
 } // namespace

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace segmat {
 namespace detail {
@@ -130,12 +131,15 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
       fixed[a] = g.areas[j] * std::exp(-(g.centroids[f] - g.centroids[j]).squaredNorm() * inv_s);
     }
   std::vector<Eigen::Vector3d> normals = g.normals, next(nf);
+  // Per-face turns summed in face order afterwards: a parallel reduction would add them in an
+  // order that depends on the thread count, and the stopping test could then differ.
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN(); // a face without normal
+  std::vector<double> turn(nf, kNone);
   for (int it = 0; it < settings.max_iterations; ++it) {
-    double turned = 0.0;
-    int counted = 0;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(+ : turned, counted)
+#pragma omp parallel for schedule(static) num_threads(threads)
     for (long f = 0; f < long(nf); ++f) {
       next[f] = normals[f];
+      turn[f] = kNone;
       if (normals[f].isZero())
         continue;
       Eigen::Vector3d sum = g.areas[f] * normals[f];
@@ -148,9 +152,15 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
       }
       if (sum.norm() > 0.0)
         next[f] = sum.normalized();
-      turned += 1.0 - next[f].dot(normals[f]);
-      ++counted;
+      turn[f] = 1.0 - next[f].dot(normals[f]);
     }
+    double turned = 0.0;
+    int counted = 0;
+    for (const double t : turn)
+      if (!std::isnan(t)) {
+        turned += t;
+        ++counted;
+      }
     normals.swap(next);
     ++result.normal_iterations;
     if (counted == 0 || turned / counted < still)
