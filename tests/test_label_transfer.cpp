@@ -96,6 +96,16 @@ sphereGraph(const std::vector<Eigen::Vector3d>& centers, const std::vector<doubl
                                     std::vector<std::vector<int>>(centers.size()));
 }
 
+// The bar's six axis spheres (nodes 0–5) and a lone small sphere near the +x end cap's corner
+// (node 6).
+MatGraph::ConstPtr
+barWithCornerSphere()
+{
+  return sphereGraph({{-1.5, 0, 0}, {-1, 0, 0}, {-0.5, 0, 0}, {0.5, 0, 0}, {1, 0, 0},
+                      {1.5, 0, 0}, {1.9, 0.4, 0.4}},
+                     {0.4, 0.4, 0.4, 0.4, 0.4, 0.4, 0.05});
+}
+
 // Box along x, [-2, 2] × [-0.5, 0.5]², and six spheres on its axis: three left, three right.
 struct BarScene
 {
@@ -344,14 +354,12 @@ TEST(MeshLabelTransfer, SmoothingOverridesAWeakDataPreference)
   // near it take label 1; with ω = 0.3 cutting them out costs more than it saves, and every
   // face takes part 0 — so label 1 disappears and the labels are compacted to all 0.
   BarScene s = bar();
-  auto graph = sphereGraph({{-1.5, 0, 0}, {-1, 0, 0}, {-0.5, 0, 0}, {0.5, 0, 0}, {1, 0, 0},
-                            {1.5, 0, 0}, {1.9, 0.4, 0.4}},
-                           {0.4, 0.4, 0.4, 0.4, 0.4, 0.4, 0.05});
   MeshLabelTransfer transfer;
   transfer.setInputMesh(s.mesh);
-  transfer.setInputGraph(graph);
+  transfer.setInputGraph(barWithCornerSphere());
   transfer.setParts({{0, 1, 2, 3, 4, 5}, {6}});
   transfer.setSmoothnessWeight(0.0);
+  transfer.setMinPartFraction(0.0); // the smoothness alone (the minimal share: next test)
   std::vector<int> labels;
   ASSERT_TRUE(transfer.transfer(labels));
   int ones = 0;
@@ -361,6 +369,44 @@ TEST(MeshLabelTransfer, SmoothingOverridesAWeakDataPreference)
   transfer.setSmoothnessWeight(0.3);
   ASSERT_TRUE(transfer.transfer(labels));
   EXPECT_EQ(labels, std::vector<int>(s.mesh->numFaces(), 0));
+}
+
+// The same lone small sphere as a third part, without smoothing: it wins the faces at one
+// corner of the bar. A minimal share below that corner's share keeps the part; one above it
+// drops the part and cuts again, and the faces then split by side, as with the two bar parts
+// alone.
+TEST(MeshLabelTransfer, PartBelowTheMinimalShareIsDropped)
+{
+  EXPECT_DOUBLE_EQ(MeshLabelTransfer().getMinPartFraction(), 0.002); // the default
+  BarScene s = bar();
+  MeshLabelTransfer transfer;
+  transfer.setInputMesh(s.mesh);
+  transfer.setInputGraph(barWithCornerSphere());
+  transfer.setParts({{0, 1, 2}, {3, 4, 5}, {6}});
+  transfer.setSmoothnessWeight(0.0);
+  transfer.setMinPartFraction(0.0);
+  std::vector<int> labels;
+  ASSERT_TRUE(transfer.transfer(labels));
+  double corner = 0.0, total = 0.0;
+  for (std::size_t f = 0; f < labels.size(); ++f) {
+    total += s.mesh->faceArea(int(f));
+    if (labels[f] == 2)
+      corner += s.mesh->faceArea(int(f));
+  }
+  ASSERT_GT(corner, 0.0);
+  const double share = corner / total;
+  ASSERT_LT(share, 0.5);
+  const std::vector<int> all = labels;
+
+  transfer.setMinPartFraction(0.5 * share);
+  ASSERT_TRUE(transfer.transfer(labels));
+  EXPECT_EQ(labels, all);
+  EXPECT_EQ(transfer.getLabelParts(), (std::vector<int>{0, 1, 2}));
+
+  transfer.setMinPartFraction(2.0 * share);
+  ASSERT_TRUE(transfer.transfer(labels));
+  EXPECT_EQ(labels, labelsBySide(*s.mesh));
+  EXPECT_EQ(transfer.getLabelParts(), (std::vector<int>{0, 1}));
 }
 
 TEST(MeshLabelTransfer, OnePartAndBadInput)

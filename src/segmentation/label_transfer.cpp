@@ -219,7 +219,7 @@ LabelTransferBase::setSmoothnessWeight(double omega)
 
 bool
 LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>& positions,
-                         std::vector<int>& labels)
+                         const std::vector<double>& weights, std::vector<int>& labels)
 {
   label_parts_.clear();
   if (!graph_ || graph_->empty()) {
@@ -243,11 +243,49 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
     label_parts_.assign(positions.empty() ? 0 : 1, 0);
     return true;
   }
-  solver_.setUnaryCosts(computePartDistanceCosts(positions, *graph_, parts_, threads_));
+  const Eigen::MatrixXd unary = computePartDistanceCosts(positions, *graph_, parts_, threads_);
+  solver_.setUnaryCosts(unary);
   if (!solver_.compute(labels)) {
     labels.clear();
     return false;
   }
+  // Parts below the minimal share: cut again among the others, until none is left below it.
+  // Each round drops at least one part, so this ends.
+  std::vector<int> kept(parts_.size());
+  for (std::size_t l = 0; l < kept.size(); ++l)
+    kept[l] = static_cast<int>(l);
+  while (min_part_fraction_ > 0.0 && kept.size() > 1) {
+    std::vector<double> share(kept.size(), 0.0);
+    double total = 0.0;
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      const double w = weights.empty() ? 1.0 : weights[i];
+      share[labels[i]] += w;
+      total += w;
+    }
+    std::vector<int> next;
+    bool dropped = false;
+    for (std::size_t r = 0; r < kept.size(); ++r) {
+      if (share[r] > 0.0 && share[r] < min_part_fraction_ * total)
+        dropped = true;
+      else if (share[r] > 0.0)
+        next.push_back(static_cast<int>(r));
+    }
+    if (!dropped || next.empty())
+      break;
+    Eigen::MatrixXd reduced(unary.rows(), static_cast<Eigen::Index>(next.size()));
+    for (std::size_t r = 0; r < next.size(); ++r)
+      reduced.col(static_cast<Eigen::Index>(r)) = unary.col(kept[next[r]]);
+    solver_.setUnaryCosts(reduced);
+    if (!solver_.compute(labels)) {
+      labels.clear();
+      return false;
+    }
+    for (int& r : next)
+      r = kept[r];
+    kept.swap(next);
+  }
+  for (int& l : labels)
+    l = kept[l];
   std::vector<char> present(parts_.size(), 0);
   for (int l : labels)
     present[l] = 1;
@@ -273,9 +311,12 @@ MeshLabelTransfer::transfer(std::vector<int>& face_labels)
     markEdgesBuilt();
   }
   std::vector<Eigen::Vector3d> centroids(mesh_->numFaces());
-  for (std::size_t f = 0; f < centroids.size(); ++f)
+  std::vector<double> areas(mesh_->numFaces());
+  for (std::size_t f = 0; f < centroids.size(); ++f) {
     centroids[f] = mesh_->faceCentroid(static_cast<int>(f));
-  return solve("MeshLabelTransfer", centroids, face_labels);
+    areas[f] = mesh_->faceArea(static_cast<int>(f));
+  }
+  return solve("MeshLabelTransfer", centroids, areas, face_labels);
 }
 
 namespace {
@@ -420,7 +461,7 @@ CloudLabelTransfer::transfer(std::vector<int>& point_labels)
   for (std::size_t k = 0; k < nodes_.size(); ++k)
     positions[k] = cloud[nodes_[k]].getVector3fMap().cast<double>();
   std::vector<int> labels;
-  if (!solve("CloudLabelTransfer", positions, labels))
+  if (!solve("CloudLabelTransfer", positions, {}, labels))
     return false;
   point_labels.assign(cloud.size(), -1);
   for (std::size_t i = 0; i < cloud.size(); ++i)

@@ -244,6 +244,25 @@ public:
     return label_parts_;
   }
 
+  /** \brief Smallest share of the surface a part may keep: of the mesh's area, or of the
+   * cloud's points (default 0.002, the value of the grower's minimal region η). A part
+   * that the cut leaves with less is dropped and the cut is made again without it, so its
+   * faces go to the parts that suit them best; noise leaves such slivers where a medial island
+   * wins a handful of faces. 0 keeps every part that wins an element.
+   */
+  void
+  setMinPartFraction(double fraction)
+  {
+    min_part_fraction_ = fraction > 0.0 && fraction < 1.0 ? fraction : 0.0;
+  }
+
+  /** \brief Smallest share of the surface a part may keep. */
+  double
+  getMinPartFraction() const
+  {
+    return min_part_fraction_;
+  }
+
   /** \brief α-expansion cycles run by the last transfer. */
   int
   getCycles() const
@@ -255,11 +274,12 @@ protected:
   LabelTransferBase() = default;
 
   /** \brief Check the graph and the parts, then label \a positions: data term, cached
-   * smoothness edges (already in solver_), α-expansion, compaction.
+   * smoothness edges (already in solver_), α-expansion, dropping parts below the minimal
+   * share of \a weights (one per position; empty: equal), compaction.
    */
   bool
   solve(const char* caller, const std::vector<Eigen::Vector3d>& positions,
-        std::vector<int>& labels);
+        const std::vector<double>& weights, std::vector<int>& labels);
 
   /** \brief True when the cached smoothness edges are missing or were built with another ω
    * or crease model. */
@@ -281,6 +301,7 @@ protected:
   MatGraph::ConstPtr graph_;
   std::vector<std::vector<int>> parts_;
   double omega_ = 0.3;
+  double min_part_fraction_ = 0.002;
   CreaseModel crease_model_ = CreaseModel::SharpConcave;
   unsigned int threads_ = 0;
   bool edges_valid_ = false; ///< the solver holds smoothness edges of the current input
