@@ -335,10 +335,15 @@ TEST(CloudSegmentation, SettersKeepValidValues)
   EXPECT_EQ(seg.getKSearch(), 10);
   EXPECT_TRUE(seg.getUseInputNormalsFlag());
   EXPECT_TRUE(seg.getVisibilityFlag());
+  EXPECT_DOUBLE_EQ(seg.getMinPartFraction(), 0.002);
   seg.setKSearch(0);
   seg.setWorkingSize(0);
+  seg.setMinPartFraction(-0.1);
   EXPECT_EQ(seg.getKSearch(), 10);
   EXPECT_EQ(seg.getWorkingSize(), 20000u);
+  EXPECT_DOUBLE_EQ(seg.getMinPartFraction(), 0.002);
+  seg.setMinPartFraction(0.0);
+  EXPECT_DOUBLE_EQ(seg.getMinPartFraction(), 0.0);
 }
 
 TEST(CloudSegmentation, ReusesItsFieldWhenOnlyGrowingOrTransferParametersChange)

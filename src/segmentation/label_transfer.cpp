@@ -217,6 +217,18 @@ LabelTransferBase::setSmoothnessWeight(double omega)
   omega_ = omega;
 }
 
+void
+LabelTransferBase::setMinPartFraction(double fraction)
+{
+  if (!(fraction >= 0.0 && fraction < 1.0)) {
+    PCL_WARN("[segmat::LabelTransfer::setMinPartFraction] %g ignored (must be in [0, 1)), "
+             "keeping %g.\n",
+             fraction, min_part_fraction_);
+    return;
+  }
+  min_part_fraction_ = fraction;
+}
+
 bool
 LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>& positions,
                          const std::vector<double>& weights, std::vector<int>& labels)

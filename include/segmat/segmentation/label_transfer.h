@@ -248,13 +248,11 @@ public:
    * cloud's points (default 0.002, the value of the grower's minimal region η). A part
    * that the cut leaves with less is dropped and the cut is made again without it, so its
    * faces go to the parts that suit them best; noise leaves such slivers where a medial island
-   * wins a handful of faces. 0 keeps every part that wins an element.
+   * wins a handful of faces. 0 keeps every part that wins an element. Values outside [0, 1)
+   * are ignored with a warning.
    */
   void
-  setMinPartFraction(double fraction)
-  {
-    min_part_fraction_ = fraction > 0.0 && fraction < 1.0 ? fraction : 0.0;
-  }
+  setMinPartFraction(double fraction);
 
   /** \brief Smallest share of the surface a part may keep. */
   double

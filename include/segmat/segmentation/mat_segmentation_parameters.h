@@ -123,6 +123,22 @@ public:
     return transfer_.getSmoothnessWeight();
   }
 
+  /** \brief Smallest share of the surface a part may keep after the cut (default 0.002;
+   * LabelTransferBase::setMinPartFraction). 0 keeps every part that wins a face or point.
+   */
+  void
+  setMinPartFraction(double fraction)
+  {
+    transfer_.setMinPartFraction(fraction);
+  }
+
+  /** \brief Smallest share of the surface a part may keep after the cut. */
+  double
+  getMinPartFraction() const
+  {
+    return transfer_.getMinPartFraction();
+  }
+
   /** \brief Seed of the merging's visibility sampling (default 0x5e6a7; not one of the paper's
    * parameters: for checking that a result does not hinge on one random draw).
    */
