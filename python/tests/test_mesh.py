@@ -49,6 +49,18 @@ def test_other_parameters_equal_the_programs(teddy, teddy_segmenter, tmp_path):
     np.testing.assert_array_equal(labels, read_labels(tmp_path / "t.seg"))
 
 
+def test_min_part_drops_parts_below_its_share(teddy, teddy_segmenter):
+    segmenter = teddy_segmenter[0]
+    assert segmat.default_parameters()["min_part"] == 0.002
+    # Teddy's head, body and limbs each hold less than a third of its area: with a minimal
+    # share of a third, at most two parts can keep theirs (the largest one always stays).
+    labels = segmenter.segment(min_part=0.34)
+    area = np.linalg.norm(np.cross(teddy[0][teddy[1][:, 1]] - teddy[0][teddy[1][:, 0]],
+                                   teddy[0][teddy[1][:, 2]] - teddy[0][teddy[1][:, 0]]), axis=1)
+    shares = np.bincount(labels, weights=area) / area.sum()
+    assert 1 <= len(shares) <= 2 and (shares >= 0.34).all()
+
+
 def test_medial_mesh_is_the_segmenters(teddy, teddy_segmenter):
     segmenter = teddy_segmenter[0]
     centers, radii, edges, triangles = segmat.medial_mesh(*teddy)
