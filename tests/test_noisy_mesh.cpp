@@ -79,7 +79,7 @@ TEST_P(NoisyTeddy, KeepsItsPartsAndFindsTheNoise)
   EXPECT_EQ(test::labelHash(labels), level.hash) << "sigma " << level.percent << " %";
 }
 
-// The structured MAT describes the shape, so noise may not grow it. Its automatic size is 0.1 %
+// The structured MAT describes the shape, so noise may not grow it (nor shrink it by much). Its automatic size is 0.1 %
 // of the initial spheres, and vertex noise along the surface stretches edges that the surface
 // sampler then fills: without the tangential relaxation PSB 61 (an airplane; clean: 17
 // structured spheres) gets 32 at σ = 0.5 % and 31 at 1 %. Noise as bench_noise draws it.
@@ -103,17 +103,16 @@ TEST(NoisyMesh, NoiseDoesNotGrowTheStructuredMat)
   EXPECT_EQ(reference, 17);
   for (const double percent : {0.5, 1.0}) {
     const int spheres = structuredSpheres(percent);
-    EXPECT_GE(spheres, reference) << "sigma " << percent << " %";
-    EXPECT_LE(spheres, reference + 3) << "sigma " << percent << " %";
+    EXPECT_NEAR(spheres, reference, 3) << "sigma " << percent << " %";
   }
 }
 
 // Golden values: update only with a deliberate change of the algorithm, saying why.
 INSTANTIATE_TEST_SUITE_P(Levels, NoisyTeddy,
                          ::testing::Values(Level{0.0, 8, 810418089236768783ull},
-                                           Level{0.2, 8, 9430284981259313817ull},
-                                           Level{0.5, 8, 13692264057637096990ull},
-                                           Level{1.0, 8, 4434877050508488741ull}),
+                                           Level{0.2, 8, 5796416235462687537ull},
+                                           Level{0.5, 8, 13581824163405978770ull},
+                                           Level{1.0, 8, 5997229730377992350ull}),
                          [](const ::testing::TestParamInfo<Level>& info) {
                            return "sigma_" + std::to_string(int(info.param.percent * 10)) +
                                   "_permille";

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace segmat {
 namespace detail {
@@ -94,7 +95,7 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
   // σ_s from the faces that share an edge (two vertices).
   double distance_sum = 0.0;
   std::size_t pairs = 0;
-  std::vector<double> chords; // |n_f − n_j| of faces sharing an edge
+  std::vector<std::pair<int, int>> edge_pairs; // faces sharing an edge, both with a normal
   for (std::size_t f = 0; f < nf; ++f)
     for (std::size_t a = first[f]; a < first[f + 1]; ++a) {
       const int j = neighbours[a];
@@ -106,7 +107,7 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
         distance_sum += (g.centroids[f] - g.centroids[j]).norm();
         ++pairs;
         if (settings.range_from_normals && !g.normals[f].isZero() && !g.normals[j].isZero())
-          chords.push_back((g.normals[f] - g.normals[j]).norm());
+          edge_pairs.emplace_back(int(f), j);
       }
     }
   if (pairs == 0)
@@ -114,13 +115,16 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
   const double sigma_s = distance_sum / double(pairs);
   result.spatial_sigma = sigma_s;
   const double inv_s = 1.0 / (2.0 * sigma_s * sigma_s);
-  double range_sigma = settings.range_sigma;
-  if (!chords.empty()) {
+  std::vector<double> chords(edge_pairs.size());
+  // σ_r from the normals as they are now: the median |n_i − n_j| over edge_pairs (floored).
+  auto rangeSigma = [&](const std::vector<Eigen::Vector3d>& normals) {
+    if (edge_pairs.empty())
+      return settings.range_sigma;
+    for (std::size_t e = 0; e < edge_pairs.size(); ++e)
+      chords[e] = (normals[edge_pairs[e].first] - normals[edge_pairs[e].second]).norm();
     std::nth_element(chords.begin(), chords.begin() + chords.size() / 2, chords.end());
-    range_sigma = std::max(range_sigma, chords[chords.size() / 2]);
-  }
-  result.range_sigma = range_sigma;
-  const double inv_r = 1.0 / (2.0 * range_sigma * range_sigma);
+    return std::max(settings.range_sigma, chords[chords.size() / 2]);
+  };
   const double still = 1.0 - std::cos(settings.still_degrees * M_PI / 180.0);
 
   // The centroids stay put while the normals are filtered: area × spatial weight once.
@@ -136,6 +140,12 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
   constexpr double kNone = std::numeric_limits<double>::quiet_NaN(); // a face without normal
   std::vector<double> turn(nf, kNone);
   for (int it = 0; it < settings.max_iterations; ++it) {
+    // Re-estimated every iteration: as the noise goes, σ_r falls back to its floor, and the
+    // creases that the first, wide iterations spared are kept from then on.
+    const double range_sigma = rangeSigma(normals);
+    if (it == 0)
+      result.range_sigma = range_sigma;
+    const double inv_r = 1.0 / (2.0 * range_sigma * range_sigma);
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (long f = 0; f < long(nf); ++f) {
       next[f] = normals[f];

@@ -20,9 +20,11 @@ struct NormalFilterSettings
 {
   /// σ_r, in units of |n_i − n_j|: 0.35 ≈ 20°, the value of Zheng et al.
   double range_sigma = 0.35;
-  /// σ_r = max(range_sigma, median |n_i − n_j| over the pairs of faces sharing an edge). Vertex
-  /// noise tilts adjacent faces apart by about that much; a fixed σ_r below it would keep the
-  /// noise as if it were creases.
+  /// σ_r = max(range_sigma, median |n_i − n_j| over the pairs of faces sharing an edge),
+  /// re-estimated from the filtered normals before every iteration. Vertex noise tilts adjacent
+  /// faces apart by about that much; a fixed σ_r below it would keep the noise as if it were
+  /// creases, and one kept at the noise's level after the noise is gone rounds off every crease
+  /// of about that turn (the steps of a stepped shaft, for one).
   bool range_from_normals = false;
   int max_iterations = 20;    ///< at most this many normal filtering iterations
   double still_degrees = 0.5; ///< stop once an iteration turns the normals less, on average
@@ -34,7 +36,7 @@ struct NormalFiltering
 {
   int normal_iterations = 0;  ///< normal filtering iterations run
   double spatial_sigma = 0.0; ///< σ_s: mean distance between the centroids of adjacent faces
-  double range_sigma = 0.0;   ///< σ_r used
+  double range_sigma = 0.0;   ///< σ_r of the first iteration
 };
 
 /** \brief Moves \a vertices so that the faces follow their bilaterally filtered normals.
