@@ -15,10 +15,13 @@
  *
  *   build/bin/bench_noise [PSB_DIR] [--kind mesh|cloud] [--levels 0,0.2,0.5,1]
  *                         [--models 1,21,...|--half tune|check] [--points N] [--seed-offset K]
- *                         [--draws K] [--input-axes] [--write DIR]
+ *                         [--draws K] [--noise-draws K] [--input-axes] [--write DIR]
  * --draws K (meshes) segments each noisy mesh K times, with jitter seeds 0..K-1
  * (MeshSegmentation::setJitterSeed), and averages: single draws differ by more than many changes
- * one would want to measure (docs/robustness.md). --input-axes segments meshes in their own
+ * one would want to measure (docs/robustness.md). --noise-draws K (meshes and clouds) draws the
+ * noise K times (σ > 0), draw k with seed offset --seed-offset + 4k, and averages over them too:
+ * one noise draw moves a half of psb-dev by about 0.01 (docs/noise.md). --input-axes segments
+ * meshes in their own
  * orientation (MeshSegmentation::setPrincipalAxesFrame(false)).
  * PSB_DIR defaults to ../shared/data/psb-dev. Levels are in percent of the diagonal. --half tune
  * takes ids 1, 21, 41, ... (id mod 20 = 1), --half check ids 6, 26, 46, ... --write DIR writes
@@ -57,7 +60,7 @@ struct Result
   double ri = 0.0;
   int parts = 0;
   double seconds = 0.0;
-  int draw = 0;
+  int draw = 0; ///< noise draw × jitter draws + jitter draw
 };
 
 std::vector<double>
@@ -71,8 +74,8 @@ parseList(const std::string& text)
 }
 
 Result
-segmentMesh(const segmat::TriangleMesh& clean, double level, std::uint32_t seed,
-            std::uint32_t draw, bool principal_axes, const std::vector<std::vector<int>>& humans,
+segmentMesh(const segmat::TriangleMesh& clean, double level, std::uint32_t seed, std::uint32_t draw,
+            bool principal_axes, const std::vector<std::vector<int>>& humans,
             const std::string& write_path)
 {
   auto input = std::make_shared<segmat::TriangleMesh>(clean);
@@ -132,7 +135,7 @@ main(int argc, char** argv)
   std::vector<int> only;
   std::size_t points = 20000;
   std::uint32_t seed_offset = 0;
-  int draws = 1;
+  int draws = 1, noise_draws = 1;
   bool principal_axes = true;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -154,6 +157,8 @@ main(int argc, char** argv)
       principal_axes = false;
     else if (arg == "--draws" && has_value)
       draws = std::max(1, std::atoi(argv[++i]));
+    else if (arg == "--noise-draws" && has_value)
+      noise_draws = std::max(1, std::atoi(argv[++i]));
     else if (arg == "--write" && has_value)
       write_dir = argv[++i];
     else if (!arg.empty() && arg[0] != '-')
@@ -161,14 +166,14 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_noise [PSB_DIR] [--kind mesh|cloud] [--levels 0,0.2,0.5,1] "
                    "[--models 1,21,...|--half tune|check] [--points N] [--seed-offset K] "
-                   "[--draws K] [--input-axes] [--write DIR]\n";
+                   "[--draws K] [--noise-draws K] [--input-axes] [--write DIR]\n";
       return arg == "-h" || arg == "--help" ? 0 : 2;
     }
   }
   if ((kind != "mesh" && kind != "cloud") || (!half.empty() && half != "tune" && half != "check") ||
-      (draws > 1 && kind != "mesh")) {
+      (draws > 1 && kind != "mesh") || (noise_draws > 1 && !write_dir.empty())) {
     std::cerr << "bench_noise: --kind is mesh or cloud, --half is tune or check, --draws is for "
-                 "meshes\n";
+                 "meshes, --write takes one noise draw\n";
     return 2;
   }
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
@@ -187,6 +192,7 @@ main(int argc, char** argv)
   }
 
   std::vector<std::vector<Result>> results(levels.size());
+  std::size_t scored = 0; // shapes with human segmentations
   try {
     for (int id : models) {
       const std::string stem = std::to_string(id);
@@ -201,26 +207,31 @@ main(int argc, char** argv)
       }
       if (humans.empty())
         continue;
-      const segmat::test::SampledCloud cloud =
-          kind == "cloud" ? segmat::test::sampleMesh(mesh, points, 1) : segmat::test::SampledCloud();
+      ++scored;
+      const segmat::test::SampledCloud cloud = kind == "cloud"
+                                                   ? segmat::test::sampleMesh(mesh, points, 1)
+                                                   : segmat::test::SampledCloud();
       for (std::size_t l = 0; l < levels.size(); ++l) {
-        const std::uint32_t seed =
-            std::uint32_t(id) * 1000u + std::uint32_t(levels[l] * 10000.0) + seed_offset;
-        std::string write_path;
-        if (!write_dir.empty()) {
-          char level_name[32];
-          std::snprintf(level_name, sizeof level_name, "%g", levels[l]);
-          write_path = write_dir + "/" + level_name + "/off/" + stem + ".off";
-        }
-        for (int d = 0; d < draws; ++d) {
-          Result r = kind == "mesh"
-                         ? segmentMesh(mesh, levels[l], seed, std::uint32_t(d), principal_axes,
-                                       humans, write_path)
-                         : segmentCloud(cloud, levels[l], seed, humans);
-          r.draw = d;
-          results[l].push_back(r);
-          std::fprintf(stderr, "%s %d sigma %g%% draw %d: 1-RI %.4f, %d parts, %.2f s\n",
-                       kind.c_str(), id, levels[l], d, r.ri, r.parts, r.seconds);
+        // The clean level has no noise to draw again.
+        for (int k = 0; k < (levels[l] > 0.0 ? noise_draws : 1); ++k) {
+          const std::uint32_t seed = std::uint32_t(id) * 1000u +
+                                     std::uint32_t(levels[l] * 10000.0) + seed_offset +
+                                     4u * std::uint32_t(k);
+          std::string write_path;
+          if (!write_dir.empty()) {
+            char level_name[32];
+            std::snprintf(level_name, sizeof level_name, "%g", levels[l]);
+            write_path = write_dir + "/" + level_name + "/off/" + stem + ".off";
+          }
+          for (int d = 0; d < draws; ++d) {
+            Result r = kind == "mesh" ? segmentMesh(mesh, levels[l], seed, std::uint32_t(d),
+                                                    principal_axes, humans, write_path)
+                                      : segmentCloud(cloud, levels[l], seed, humans);
+            r.draw = k * draws + d;
+            results[l].push_back(r);
+            std::fprintf(stderr, "%s %d sigma %g%% draw %d: 1-RI %.4f, %d parts, %.2f s\n",
+                         kind.c_str(), id, levels[l], r.draw, r.ri, r.parts, r.seconds);
+          }
         }
       }
     }
@@ -231,13 +242,21 @@ main(int argc, char** argv)
   }
 
   std::printf("%s, %zu shapes%s%s\n\n", kind == "mesh" ? "meshes" : "clouds (no normals)",
-              results[0].size() / draws, half.empty() ? "" : ", half ", half.c_str());
-  if (draws > 1)
-    std::printf("Mean over %d jitter draws (MeshSegmentation::setJitterSeed 0..%d); the last "
-                "column lists each draw's 1 - RI.\n\n", draws, draws - 1);
+              scored, half.empty() ? "" : ", half ",
+              half.c_str());
+  const int runs = draws * noise_draws; // segmentations per shape and level
+  if (runs > 1) {
+    std::printf("Mean over %d noise draw%s (seed offset %u + 4k)", noise_draws,
+                noise_draws > 1 ? "s" : "", seed_offset);
+    if (kind == "mesh")
+      std::printf(" x %d jitter draw%s (MeshSegmentation::setJitterSeed 0..%d)", draws,
+                  draws > 1 ? "s" : "", draws - 1);
+    std::printf("; the last column lists each run's 1 - RI, noise draw by noise draw (the clean "
+                "level has one noise draw).\n\n");
+  }
   std::printf("| noise sigma (%% of diagonal) | 1 - RI | parts per shape | median s | max s |%s\n"
-              "|---|---|---|---|---|%s\n", draws > 1 ? " 1 - RI per draw |" : "",
-              draws > 1 ? "---|" : "");
+              "|---|---|---|---|---|%s\n",
+              runs > 1 ? " 1 - RI per run |" : "", runs > 1 ? "---|" : "");
   for (std::size_t l = 0; l < levels.size(); ++l) {
     double ri = 0.0, parts = 0.0;
     std::vector<double> seconds;
@@ -248,11 +267,12 @@ main(int argc, char** argv)
     }
     std::printf("| %g | %.4f | %.1f | %.2f | %.2f |", levels[l], ri, parts,
                 segmat::bench::median(seconds), *std::max_element(seconds.begin(), seconds.end()));
-    if (draws > 1) {
-      std::vector<double> per_draw(draws, 0.0);
+    if (runs > 1) {
+      const int level_runs = levels[l] > 0.0 ? runs : draws;
+      std::vector<double> per_draw(level_runs, 0.0);
       for (const Result& r : results[l])
-        per_draw[r.draw] += r.ri * draws / double(results[l].size());
-      for (int d = 0; d < draws; ++d)
+        per_draw[r.draw] += r.ri * level_runs / double(results[l].size());
+      for (int d = 0; d < level_runs; ++d)
         std::printf(" %.4f", per_draw[d]);
       std::printf(" |");
     }
