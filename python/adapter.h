@@ -159,6 +159,7 @@ struct RunInfo
   std::size_t base_spheres = 0, structured_spheres = 0;
   bool cloud = false;  ///< the cloud path (noise_spacing applies)
   double noise_sigma = 0.0, noise_spacing = 0.0; ///< estimated, in the input's units
+  double noise_remaining = 0.0; ///< meshes: left on the denoised surface (input's units)
   int denoising_passes = 0;
 };
 
@@ -173,6 +174,7 @@ segment(segmat::MeshSegmentation& s, std::vector<int>& labels, RunInfo& info)
   info.base_spheres = s.getBaseMat() ? s.getBaseMat()->numVertices() : 0;
   info.structured_spheres = s.getStructuredMat() ? s.getStructuredMat()->numVertices() : 0;
   info.noise_sigma = s.getEstimatedNoise();
+  info.noise_remaining = s.getRemainingNoise();
   info.denoising_passes = s.getDenoisingPasses();
   return true;
 }

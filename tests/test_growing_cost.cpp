@@ -101,6 +101,24 @@ TEST(GrowingCost, RadiusTerm)
   EXPECT_EQ(radiusCost(a, b), 0.0);
 }
 
+// A tolerance takes its length off the radius difference before dividing: 1 against 1.015 with
+// 0.01 of tolerance is 0.005, with 0.02 nothing; a difference far above it keeps its cost
+// less the tolerance. growingCost passes the weights' tolerance on.
+TEST(GrowingCost, RadiusToleranceTakesItsLengthOffTheDifference)
+{
+  MatNode a, b;
+  a.mean_radius = 1.0;
+  b.mean_radius = 1.015;
+  EXPECT_NEAR(radiusCost(a, b, 0.01), 0.005, 1e-12);
+  EXPECT_NEAR(radiusCost(b, a, 0.01), 0.005, 1e-12);
+  EXPECT_EQ(radiusCost(a, b, 0.02), 0.0);
+  b.mean_radius = 3.0;
+  EXPECT_NEAR(radiusCost(a, b, 0.5), 1.5, 1e-12);
+  EXPECT_EQ(radiusCost(a, b, 0.0), 2.0);
+  a.mean_radius = 0.0;
+  EXPECT_EQ(radiusCost(a, b, 0.5), std::numeric_limits<double>::infinity());
+}
+
 TEST(GrowingCost, LinearRadiusFieldGrowsThroughPrimitiveTerm)
 {
   // r = 1 − 0.25·x on the plane z = 0: both slabs have the tangent planes (0.25, 0, ±0.968)·x = 1.

@@ -132,6 +132,12 @@ TEST(MatRegionGrowing, SettersKeepOldValueOnBadInput)
   EXPECT_EQ(g.getPrimitiveWeight(), 1.5);
   EXPECT_EQ(g.getMergeRounds(), 3);
   EXPECT_TRUE(g.getUsePrimitiveTerm());
+  EXPECT_EQ(g.getRadiusTolerance(), 0.0);
+  g.setRadiusTolerance(-0.1);
+  g.setRadiusTolerance(NAN);
+  EXPECT_EQ(g.getRadiusTolerance(), 0.0);
+  g.setRadiusTolerance(0.25);
+  EXPECT_EQ(g.getRadiusTolerance(), 0.25);
   g.setGrowingThreshold(-1.0);
   g.setGrowingThreshold(NAN);
   g.setMinRegionFraction(1.5);

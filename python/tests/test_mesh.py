@@ -20,6 +20,10 @@ def test_info_is_the_programs_json(teddy_cli, teddy_segmenter):
     info = teddy_segmenter[2]
     for key in ("parts", "face_counts", "mat_computed", "base_spheres", "structured_spheres"):
         assert info[key] == cli_info[key], key
+    # Teddy is clean: nothing smoothed, nothing left.
+    assert info["noise"] == {"sigma": pytest.approx(cli_info["noise"]["sigma"], rel=1e-5),
+                             "remaining_sigma": 0.0, "passes": 0}
+    assert cli_info["noise"]["remaining_sigma"] == 0 and cli_info["noise"]["passes"] == 0
     # The program adds its file stages around the library's.
     assert list(info["seconds"]) == [k for k in cli_info["seconds"] if k not in ("load", "write")]
     assert info["cpp_seconds"] >= sum(info["seconds"].values())

@@ -516,6 +516,12 @@ denoiseMeshSurface(std::vector<Eigen::Vector3d>& vertices,
   // and stretches edges, and the sampler would fill them with samples that make the MAT (and
   // with it the structured MAT's target) grow with the noise. Two σ undoes most of it.
   relaxTangentially(vertices, faces, 2.0 * result.noise.sigma, 5, threads);
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    positions[i] = vertices[i].cast<float>();
+  neighbourhoods.update(positions);
+  result.remaining_sigma =
+      estimateSurfaceNoise(positions, neighbourhoods, estimateStride(positions.size()), threads)
+          .sigma;
   return result;
 }
 

@@ -170,7 +170,7 @@ coneConePrimitiveCost(const MatNode& a, const MatNode& b,
 } // namespace
 
 double
-radiusCost(const MatNode& a, const MatNode& b)
+radiusCost(const MatNode& a, const MatNode& b, double tolerance)
 {
   if (std::isnan(a.mean_radius) || std::isnan(b.mean_radius))
     return std::numeric_limits<double>::quiet_NaN(); // std::min/max would drop the NaN
@@ -178,6 +178,8 @@ radiusCost(const MatNode& a, const MatNode& b)
   const double hi = std::max(a.mean_radius, b.mean_radius);
   if (!(lo > 0.0))
     return hi == 0.0 ? 0.0 : kInf; // guard r̄ = 0
+  if (tolerance > 0.0)
+    return std::max(0.0, hi - lo - tolerance) / lo;
   return hi / lo - 1.0;
 }
 
@@ -218,7 +220,7 @@ growingCost(const MatGraph& graph, int i, int j, const GrowingCostWeights& weigh
 {
   const MatNode& a = graph.node(i);
   const MatNode& b = graph.node(j);
-  const double c_r = radiusCost(a, b);
+  const double c_r = radiusCost(a, b, weights.radius_tolerance);
   const double c_theta = angleCost(a, b, graph.centers());
   const double c_mp =
       weights.use_primitive_term ? primitiveCost(a, b, graph.centers(), graph.radii()) : 1.0;

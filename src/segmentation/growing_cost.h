@@ -19,15 +19,17 @@ struct GrowingCostWeights
   double alpha = 0.05;            ///< α, weight of the angle term C_θ
   double lambda = 1.5;            ///< λ, weight of the medial-primitive term C_mp
   bool use_primitive_term = true; ///< false: cost = C_r + α·C_θ (graphs of points have no C_mp)
+  double radius_tolerance = 0.0;  ///< radius differences up to this length do not count in C_r
 };
 
 /** \brief Radius term C_r = max(r̄_a, r̄_b) / min(r̄_a, r̄_b) − 1 (>= 0).
  *
- * Guards r̄ = 0 (undefined in the authors' code): two zero mean radii give 0, one gives +inf; a
- * NaN radius gives NaN.
+ * With a \a tolerance t > 0: max(0, max − min − t) / min, so that differences the surface cannot
+ * tell apart (its remaining noise) cost nothing. Guards r̄ = 0 (undefined in the authors' code):
+ * two zero mean radii give 0, one gives +inf; a NaN radius gives NaN.
  */
 double
-radiusCost(const MatNode& a, const MatNode& b);
+radiusCost(const MatNode& a, const MatNode& b, double tolerance = 0.0);
 
 /** \brief Angle term C_θ: the bend between two nodes in degrees / 180, in [0, 1].
  *

@@ -304,6 +304,7 @@ MatRegionGrowing::MatRegionGrowing()
 , merge_rounds_(3)
 , max_seed_radius_ratio_(3.0)
 , max_bend_angle_(60.0)
+, radius_tolerance_(0.0)
 , seed_(0x5e6a7u)
 {}
 
@@ -352,6 +353,13 @@ MatRegionGrowing::setMaxBendAngle(double degrees)
 {
   detail::assignChecked(max_bend_angle_, degrees, degrees > 0.0 && degrees <= 90.0,
                         "MatRegionGrowing::setMaxBendAngle", "in (0, 90]");
+}
+
+void
+MatRegionGrowing::setRadiusTolerance(double length)
+{
+  detail::assignChecked(radius_tolerance_, length, length >= 0.0 && std::isfinite(length),
+                        "MatRegionGrowing::setRadiusTolerance", "finite and >= 0");
 }
 
 void
@@ -420,6 +428,7 @@ MatRegionGrowing::extract(std::vector<pcl::PointIndices>& parts)
   weights.alpha = alpha_;
   weights.lambda = lambda_;
   weights.use_primitive_term = use_primitive_term_ && g.hasPrimitives();
+  weights.radius_tolerance = radius_tolerance_;
 
   // η counts spheres (base-MAT vertices), not nodes, as the authors' `RegionGrowing`; at least
   // one node.

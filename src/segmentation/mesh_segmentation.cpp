@@ -74,6 +74,7 @@ MeshSegmentation::prepareWorkingMesh()
                                  detail::threadCount(getNumberOfThreads()), 4.0);
   noise_sigma_ = denoising.noise.sigma;
   denoising_passes_ = denoising.passes;
+  remaining_sigma_ = denoising.passes > 0 ? denoising.remaining_sigma : 0.0;
   if (denoising.passes == 0) {
     working_mesh_ = mesh_;
     return;
@@ -266,6 +267,8 @@ MeshSegmentation::segmentInFrame(std::vector<int>& face_labels)
   stage_seconds_.emplace_back("surface_tree", seconds);
 
   clock.lap();
+  // Radius differences within the noise that denoising left are no evidence of a part boundary.
+  grower_.setRadiusTolerance(remaining_sigma_);
   std::vector<pcl::PointIndices> grown;
   if (!grower_.extract(grown) || grown.empty()) {
     PCL_ERROR("[segmat::MeshSegmentation::segment] region growing failed.\n");

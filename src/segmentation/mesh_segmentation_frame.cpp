@@ -101,4 +101,10 @@ MeshSegmentation::getEstimatedNoise() const
   return frame_ ? noise_sigma_ / frame_->frame.scale : noise_sigma_;
 }
 
+double
+MeshSegmentation::getRemainingNoise() const
+{
+  return frame_ ? remaining_sigma_ / frame_->frame.scale : remaining_sigma_;
+}
+
 } // namespace segmat

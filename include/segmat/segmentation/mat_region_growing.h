@@ -193,6 +193,23 @@ public:
     return max_bend_angle_;
   }
 
+  /** \brief Set the radius tolerance: differences of two nodes' mean radii up to this length
+   * do not count in the radius term C_r (SEG-MAT §4.3), which becomes
+   * max(0, max − min − tolerance) / min. MeshSegmentation sets it to the noise that remains on
+   * a denoised surface, where a radius difference of that size tells nothing; 0 (the default)
+   * is the paper's term.
+   * \param[in] length a finite length >= 0, in the graph's units; other values are rejected
+   * with a warning
+   */
+  void
+  setRadiusTolerance(double length);
+  /** \brief Radius differences up to this length cost nothing in C_r. */
+  double
+  getRadiusTolerance() const
+  {
+    return radius_tolerance_;
+  }
+
   /** \brief Set the visibility test used when merging. When unset (the default) the visibility
    * gate is skipped: parts merge on adjacency and histogram similarity alone.
    */
@@ -273,6 +290,7 @@ private:
   int merge_rounds_;
   double max_seed_radius_ratio_;
   double max_bend_angle_;
+  double radius_tolerance_;
   SegmentVisibility visibility_;
   unsigned seed_;
 

@@ -204,6 +204,13 @@ public:
   double
   getEstimatedNoise() const;
 
+  /** \brief The noise left on the denoised surface after the last segment() (the same
+   * estimate, on the smoothed copy), in the mesh's units: 0 for a mesh found clean. Radius
+   * differences of this size do not count in the growing cost
+   * (MatRegionGrowing::setRadiusTolerance). */
+  double
+  getRemainingNoise() const;
+
   /** \brief Smoothing passes the last segment() applied: 0 for a mesh found clean. */
   int
   getDenoisingPasses() const
@@ -261,6 +268,7 @@ private:
   // noise_sigma_ is in that frame's units.
   TriangleMesh::ConstPtr working_mesh_;
   double noise_sigma_ = 0.0;
+  double remaining_sigma_ = 0.0; // σ̂ of the denoised copy; 0 when the input is used as it is
   int denoising_passes_ = 0;
   MedialMesh::ConstPtr base_;
   MedialMesh::ConstPtr structured_;
