@@ -246,13 +246,13 @@ main(int argc, char** argv)
               half.c_str());
   const int runs = draws * noise_draws; // segmentations per shape and level
   if (runs > 1) {
-    std::printf("Mean over %d noise draw%s (seed offset %u + 4k)", noise_draws,
+    std::printf("Runs per shape and level: %d noise seed%s (offset %u + 4k)", noise_draws,
                 noise_draws > 1 ? "s" : "", seed_offset);
     if (kind == "mesh")
-      std::printf(" x %d jitter draw%s (MeshSegmentation::setJitterSeed 0..%d)", draws,
+      std::printf(" x %d jitter seed%s (MeshSegmentation::setJitterSeed 0..%d)", draws,
                   draws > 1 ? "s" : "", draws - 1);
-    std::printf("; the last column lists each run's 1 - RI, noise draw by noise draw (the clean "
-                "level has one noise draw).\n\n");
+    std::printf("; σ = 0 takes one noise seed. Figures are means over the runs; the last column "
+                "is each run's 1 - RI.\n\n");
   }
   std::printf("| noise sigma (%% of diagonal) | 1 - RI | parts per shape | median s | max s |%s\n"
               "|---|---|---|---|---|%s\n",
