@@ -180,11 +180,12 @@ run(int argc, char** argv)
 
   if (common.json) {
     std::printf("{\"parts\": %zu, \"point_counts\": %s, \"seconds\": %s, "
-                "\"noise\": {\"sigma\": %.9g, \"spacing\": %.9g, \"passes\": %d}, "
+                "\"noise\": {\"sigma\": %.9g, \"spacing\": %.9g, \"remaining_sigma\": %.9g, "
+                "\"passes\": %d}, "
                 "\"origin\": [%.17g, %.17g, %.17g]}\n",
                 parts.size(), jsonSizes(parts).c_str(), jsonSeconds(seconds).c_str(),
                 segmentation.getEstimatedNoise(), segmentation.getEstimatedSpacing(),
-                segmentation.getDenoisingPasses(), loaded.origin.x(), loaded.origin.y(),
+                segmentation.getRemainingNoise(), segmentation.getDenoisingPasses(), loaded.origin.x(), loaded.origin.y(),
                 loaded.origin.z());
     return kExitOk;
   }

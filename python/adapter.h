@@ -159,7 +159,7 @@ struct RunInfo
   std::size_t base_spheres = 0, structured_spheres = 0;
   bool cloud = false;  ///< the cloud path (noise_spacing applies)
   double noise_sigma = 0.0, noise_spacing = 0.0; ///< estimated, in the input's units
-  double noise_remaining = 0.0; ///< meshes: left on the denoised surface (input's units)
+  double noise_remaining = 0.0; ///< left on the denoised surface (input's units)
   int denoising_passes = 0;
 };
 
@@ -194,6 +194,7 @@ segment(CloudSegmentation& s, std::vector<int>& labels, RunInfo& info)
   info.cloud = true;
   info.noise_sigma = s.getEstimatedNoise();
   info.noise_spacing = s.getEstimatedSpacing();
+  info.noise_remaining = s.getRemainingNoise();
   info.denoising_passes = s.getDenoisingPasses();
   return true;
 }

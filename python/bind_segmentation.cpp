@@ -230,8 +230,7 @@ public:
     noise["sigma"] = last.noise_sigma;
     if (last.cloud)
       noise["spacing"] = last.noise_spacing;
-    else
-      noise["remaining_sigma"] = last.noise_remaining;
+    noise["remaining_sigma"] = last.noise_remaining;
     noise["passes"] = last.denoising_passes;
     d["noise"] = noise;
     if (!last.cloud)

@@ -69,13 +69,18 @@ TEST_P(NoisyPsbCloud, KeepsItsPartsAndFindsTheNoise)
   // coordinate it lands between a quarter of σ and σ.
   const double sigma = c.percent / 100.0 * diagonal;
   EXPECT_GT(seg.getEstimatedSpacing(), 0.0);
+  // What smoothing leaves is measured again (the grower's radius tolerance): nothing on a clean
+  // cloud, a small fraction of the input's estimate on a smoothed one.
   if (c.percent == 0.0) {
     EXPECT_EQ(seg.getDenoisingPasses(), 0);
+    EXPECT_EQ(seg.getRemainingNoise(), 0.0);
   }
   else {
     EXPECT_GE(seg.getDenoisingPasses(), 1);
     EXPECT_GT(seg.getEstimatedNoise(), sigma / 4.0);
     EXPECT_LT(seg.getEstimatedNoise(), sigma);
+    EXPECT_GT(seg.getRemainingNoise(), 0.0);
+    EXPECT_LT(seg.getRemainingNoise(), 0.2 * seg.getEstimatedNoise());
   }
 
   // People agree among themselves at ~0.10 of 1 − RI on PSB.
@@ -93,21 +98,49 @@ TEST_P(NoisyPsbCloud, KeepsItsPartsAndFindsTheNoise)
 // of their normals and the base MAT falls apart, so this case also passes through the retry
 // with mirror-related normals. It is a weak case: in about a third of the noise draws seat and
 // back still grow into one part (1 − RI near 0.4; bench_noise --kind cloud --models 101
-// --levels 0.5 with --seed-offset 0..5), and this draw is one of them. Bearing 346 sheds medial
-// foam from its flange. Glasses 41: two thin lens plates joined at the bridge. Box 321, a box
-// with a smaller box on top, is the weak case: its noisy faces leave medial foam that one
-// segmentation cuts into extra parts.
+// --levels 0.5 with --seed-offset 0..5), and this draw is one of them. Glasses 41: two thin lens
+// plates joined at the bridge. Box 321, a box with a smaller box on top, is a weak case: its
+// noisy faces leave medial foam that one segmentation cuts into extra parts. Bearing 346 is the
+// weakest: its two shaft cylinders differ by 15 % in radius, and once noise spreads each
+// cylinder's spheres over all radii their radius histograms come within the first merging
+// round's EMD limit. In this draw the two merge (2 parts where people see 3); in the bench
+// they merge in 3 of 4 draws at 0.5 % (docs/noise.md, "Limits").
 INSTANTIATE_TEST_SUITE_P(
     Models, NoisyPsbCloud,
     ::testing::Values(NoisyCloudCase{101, 0.0, 0.06, 12, 11170626562616678947ull},
-                      NoisyCloudCase{101, 0.5, 0.45, 8, 17950052312469269353ull},
+                      NoisyCloudCase{101, 0.5, 0.45, 9, 9941972327193756250ull},
                       NoisyCloudCase{346, 0.0, 0.05, 3, 2476743862870366952ull},
-                      NoisyCloudCase{346, 0.5, 0.28, 3, 13733384471286831738ull},
-                      NoisyCloudCase{41, 0.5, 0.15, 7, 3847660585274034986ull},
-                      NoisyCloudCase{321, 0.5, 0.45, 4, 17914722673856777116ull}),
+                      NoisyCloudCase{346, 0.5, 0.36, 2, 2687951211770937761ull},
+                      NoisyCloudCase{41, 0.5, 0.15, 9, 4876003484471491246ull},
+                      NoisyCloudCase{321, 0.5, 0.45, 3, 8055613398494495648ull}),
     [](const ::testing::TestParamInfo<NoisyCloudCase>& info) {
       return "psb" + std::to_string(info.param.model) + "_sigma_" +
              std::to_string(int(info.param.percent * 10)) + "_permille";
     });
 
 } // namespace
+
+// The noise figures are lengths in the input's units: a noisy cloud scaled by 8 (a power of two,
+// so the working frame and every label stay exactly the same) reports each of them 8 times
+// larger, the noise left after smoothing included.
+TEST(NoisyCloudNoise, FiguresScaleWithTheInput)
+{
+  const std::string dir = std::string(SEGMAT_DATA_DIR) + "/psb41/";
+  test::SampledCloud cloud = test::sampleMesh(io::loadOff(dir + "41.off"), 20000, 1);
+  test::addGaussianNoise(cloud, 0.005, 2);
+  test::SampledCloud scaled = cloud;
+  for (Eigen::Vector3f& p : scaled.points)
+    p *= 8.0f;
+  CloudSegmentation<pcl::PointXYZ> a, b;
+  std::vector<pcl::PointIndices> parts;
+  for (auto [seg, input] : {std::make_pair(&a, &cloud), std::make_pair(&b, &scaled)}) {
+    seg->setInputCloud(input->toCloud<pcl::PointXYZ>());
+    seg->setNumberOfThreads(1);
+    ASSERT_TRUE(seg->segment(parts));
+  }
+  EXPECT_EQ(a.getLabels(), b.getLabels());
+  ASSERT_GT(a.getRemainingNoise(), 0.0);
+  EXPECT_DOUBLE_EQ(b.getEstimatedNoise(), 8.0 * a.getEstimatedNoise());
+  EXPECT_DOUBLE_EQ(b.getEstimatedSpacing(), 8.0 * a.getEstimatedSpacing());
+  EXPECT_DOUBLE_EQ(b.getRemainingNoise(), 8.0 * a.getRemainingNoise());
+}

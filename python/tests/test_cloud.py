@@ -14,7 +14,7 @@ def test_labels_equal_the_programs_on_a_psb_dev_cloud(psb_cloud):
     info = segmenter.info
     for key in ("parts", "point_counts"):
         assert info[key] == cli_info[key], key
-    for key in ("sigma", "spacing", "passes"):
+    for key in ("sigma", "spacing", "remaining_sigma", "passes"):
         assert info["noise"][key] == pytest.approx(cli_info["noise"][key], rel=1e-8), key
     assert list(info["seconds"]) == [k for k in cli_info["seconds"] if k not in ("load", "write")]
     assert info["parts"] > 1 and segmenter.base_mat[0].shape[1] == 3

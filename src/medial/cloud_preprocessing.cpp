@@ -203,6 +203,7 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
   input_to_working_.clear();
   normals_estimated_ = false;
   smoothing_passes_ = 0;
+  remaining_sigma_ = 0.0;
   noise_sigma_ = spacing_ = 0.0;
   if (!input_ || input_->empty()) {
     PCL_ERROR("[segmat::CloudPreprocessing::compute] No input cloud, or it is empty.\n");
@@ -280,6 +281,7 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
     const detail::SurfaceDenoising denoising =
         detail::denoiseCloudSurface(positions, 2 * normal_k_, smoothing_iterations_, threads);
     smoothing_passes_ = denoising.passes;
+    remaining_sigma_ = denoising.remaining_sigma;
     noise_sigma_ = denoising.noise.sigma;
     spacing_ = denoising.noise.spacing;
     for (std::size_t i = 0; i < cloud.size(); ++i)

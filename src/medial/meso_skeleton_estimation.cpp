@@ -205,6 +205,7 @@ preprocessCloud(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& cloud, bool h
   stats.smoothing_passes = preprocessing.getSmoothingPassesApplied();
   stats.noise_sigma = preprocessing.getEstimatedNoise();
   stats.spacing = preprocessing.getEstimatedSpacing();
+  stats.remaining_sigma = preprocessing.getRemainingNoise();
   stats.seconds_preprocessing = secondsSince(start);
   return true;
 }

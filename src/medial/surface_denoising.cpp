@@ -430,7 +430,14 @@ SurfaceDenoising
 denoiseCloudSurface(std::vector<Eigen::Vector3f>& positions, int k, int max_passes, int threads)
 {
   NearestNeighbourhoods neighbourhoods(k);
-  return denoiseSurface(positions, neighbourhoods, max_passes, threads);
+  SurfaceDenoising result = denoiseSurface(positions, neighbourhoods, max_passes, threads);
+  if (result.passes > 0) {
+    neighbourhoods.update(positions);
+    result.remaining_sigma =
+        estimateSurfaceNoise(positions, neighbourhoods, estimateStride(positions.size()), threads)
+            .sigma;
+  }
+  return result;
 }
 
 double

@@ -89,7 +89,7 @@ struct SurfaceDenoising
   int passes = 0;     ///< smoothing passes that moved the samples
   double face_turn_degrees = 0.0; ///< meshes: median turn of a face to its flattest neighbour
   int normal_iterations = 0;      ///< meshes: bilateral normal filtering iterations
-  /// Meshes: σ̂ of the denoised surface (the same estimate), 0 when nothing was smoothed.
+  /// σ̂ of the denoised surface (the same estimate), 0 when nothing was smoothed.
   double remaining_sigma = 0.0;
 };
 

@@ -235,6 +235,7 @@ moveFromNormalizedFrame(const CloudFrame& frame, const pcl::Indices& indices, Me
   }
   stats.noise_sigma /= frame.scale;
   stats.spacing /= frame.scale;
+  stats.remaining_sigma /= frame.scale;
 }
 
 void

@@ -57,6 +57,7 @@ CloudSegmentation<PointT>::computeField()
   graph_.reset();
   tags_ = StructureTags();
   stats_ = MesoSkeletonStatistics();
+  working_remaining_sigma_ = 0.0;
   working_.reset(new pcl::PointCloud<pcl::PointNormal>);
   input_to_working_.clear();
   // Every stage works on a copy in the normalised frame (centred, scaled by a power of two) and
@@ -99,6 +100,7 @@ CloudSegmentation<PointT>::computeField()
     }
   }
   input_to_working_ = detail::inputToWorking(input_->size(), frame.indices, copy_to_working);
+  working_remaining_sigma_ = stats_.remaining_sigma; // the grower's frame
   // What the caller reads back is in the input's frame (the graph stays in the normalised one).
   detail::moveFromNormalizedFrame(frame, frame.indices, base, structured, *skeleton_, stats_);
   if (!base.empty())
@@ -172,6 +174,8 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
 
   std::vector<int> working_labels, label_parts;
   std::vector<pcl::PointIndices> grown;
+  // As for meshes: radius differences within the noise that smoothing left tell nothing.
+  grower_.setRadiusTolerance(working_remaining_sigma_);
   if (!detail::segmentWorkingCloud(graph_, tags_, *working_, k_, visibility_, grower_, transfer_,
                                    working_labels, label_parts, grown, stage_seconds_)) {
     stage_seconds_.clear();

@@ -195,6 +195,14 @@ public:
     return noise_sigma_;
   }
 
+  /** \brief The noise estimated again on the smoothed working cloud; 0 when nothing was
+   * smoothed. */
+  double
+  getRemainingNoise() const
+  {
+    return remaining_sigma_;
+  }
+
   /** \brief Median nearest-neighbour distance of the working cloud, from the same estimate. */
   double
   getEstimatedSpacing() const
@@ -215,6 +223,7 @@ private:
   bool normals_estimated_ = false;
   int smoothing_passes_ = 0;
   double noise_sigma_ = 0.0;
+  double remaining_sigma_ = 0.0;
   double spacing_ = 0.0;
 };
 

@@ -59,6 +59,7 @@ struct MesoSkeletonStatistics
   int smoothing_passes = 0;         ///< smoothing passes applied (> 0: the cloud was noisy)
   double noise_sigma = 0;           ///< estimated noise σ (CloudPreprocessing::getEstimatedNoise)
   double spacing = 0;               ///< estimated spacing (CloudPreprocessing::getEstimatedSpacing)
+  double remaining_sigma = 0;       ///< noise left after smoothing (CloudPreprocessing::getRemainingNoise)
   double seconds_preprocessing = 0; ///< resampling, normals, orientation
   double seconds_balls = 0;         ///< shrinking balls
   double seconds_medial = 0;        ///< filters, contraction, reduction, radii, normals

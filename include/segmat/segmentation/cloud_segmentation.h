@@ -169,6 +169,15 @@ public:
     return stats_.spacing;
   }
 
+  /** \brief The noise left on the smoothed working points after the last segment() (the same
+   * estimate, again), in the input's units: 0 for a cloud found clean. Radius differences of
+   * this size do not count in the growing cost (MatRegionGrowing::setRadiusTolerance). */
+  double
+  getRemainingNoise() const
+  {
+    return stats_.remaining_sigma;
+  }
+
   /** \brief Smoothing passes the last segment() applied to the working points: 0 for a cloud
    * found clean (or one whose normals were used). */
   int
@@ -352,6 +361,7 @@ private:
   int k_ = 10;
   bool visibility_ = true;
   MesoSkeletonStatistics stats_; ///< the last segment()'s preprocessing
+  double working_remaining_sigma_ = 0.0; ///< stats_.remaining_sigma in the normalised frame
 
   // The field: preprocessing, medial axis and graph, kept while only grower and transfer
   // parameters change (see segment()).

@@ -195,9 +195,9 @@ public:
 
   /** \brief Set the radius tolerance: differences of two nodes' mean radii up to this length
    * do not count in the radius term C_r (SEG-MAT §4.3), which becomes
-   * max(0, max − min − tolerance) / min. MeshSegmentation sets it to the noise that remains on
-   * a denoised surface, where a radius difference of that size tells nothing; 0 (the default)
-   * is the paper's term.
+   * max(0, max − min − tolerance) / min. MeshSegmentation and CloudSegmentation set it to the
+   * noise that remains on a denoised surface, where a radius difference of that size tells
+   * nothing; 0 (the default) is the paper's term.
    * \param[in] length a finite length >= 0, in the graph's units; other values are rejected
    * with a warning
    */
