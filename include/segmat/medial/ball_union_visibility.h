@@ -20,10 +20,12 @@ namespace segmat {
  * SEG-MAT merges two parts only when enough segments between their balls cross no surface
  * (SEG-MAT §4.4; the mesh path tests the segments against the triangles). A cloud has
  * no triangles, but its medial balls cover its interior, so "crosses no surface" becomes "never
- * leaves the union of the balls". The test sphere-traces the segment: at a point q, with
- * d = min_i (|q − c_i| − ρ·r_i) (segmat::SphereTree), d ≤ 0 means q is inside, and the ball of
- * radius −d around q is too, so the walk may jump −d ahead (at least 1e-3 of the balls'
- * extent, so it cannot stall on a boundary); d > 0 means the segment has left the shape.
+ * leaves the union of the balls". The test walks the segment: at a point q, with
+ * d = min_i (|q − c_i| − ρ·r_i) (segmat::SphereTree), d > 0 means the segment has left the
+ * shape; d ≤ 0 means q is inside the deepest ball i, and since a ball is convex the segment
+ * stays inside it until it crosses that ball's sphere, so the walk jumps to half a minimal step
+ * before that crossing (at least −d and at least the minimal step, 1e-3 of the balls' extent,
+ * so it cannot stall on a boundary; gaps shorter than a minimal step may be bridged).
  * ρ > 1 (default 1.1) bridges the small gaps between neighbouring balls of a sampled medial
  * axis.
  */
@@ -39,7 +41,13 @@ public:
   operator()(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
 
 private:
-  std::shared_ptr<const SphereTree> tree_; ///< shared: the functor is copied into std::function
+  struct Balls
+  {
+    SphereTree tree;
+    std::vector<Eigen::Vector3d> centers;
+    std::vector<double> radii; ///< inflated
+  };
+  std::shared_ptr<const Balls> balls_; ///< shared: the functor is copied into std::function
   double min_step_ = 0.0;
 };
 
