@@ -185,8 +185,8 @@ run(int argc, char** argv)
                 "\"origin\": [%.17g, %.17g, %.17g]}\n",
                 parts.size(), jsonSizes(parts).c_str(), jsonSeconds(seconds).c_str(),
                 segmentation.getEstimatedNoise(), segmentation.getEstimatedSpacing(),
-                segmentation.getRemainingNoise(), segmentation.getDenoisingPasses(), loaded.origin.x(), loaded.origin.y(),
-                loaded.origin.z());
+                segmentation.getRemainingNoise(), segmentation.getDenoisingPasses(),
+                loaded.origin.x(), loaded.origin.y(), loaded.origin.z());
     return kExitOk;
   }
   printPartsText("point", parts, seconds);

@@ -178,14 +178,14 @@ run(int argc, char** argv)
 
   if (common.json) {
     std::printf("{\"parts\": %zu, \"mat_computed\": %s, \"base_spheres\": %zu, "
-                "\"structured_spheres\": %zu, \"noise\": {\"sigma\": %.6g, \"remaining_sigma\": %.6g, "
-                "\"passes\": %d}, "
+                "\"structured_spheres\": %zu, \"noise\": {\"sigma\": %.6g, "
+                "\"remaining_sigma\": %.6g, \"passes\": %d}, "
                 "\"face_counts\": %s, \"seconds\": %s}\n",
                 parts.size(), segmentation.hasComputedMats() ? "true" : "false",
                 segmentation.getBaseMat()->numVertices(),
                 segmentation.getStructuredMat()->numVertices(), segmentation.getEstimatedNoise(),
-                segmentation.getRemainingNoise(), segmentation.getDenoisingPasses(), jsonSizes(parts).c_str(),
-                jsonSeconds(seconds).c_str());
+                segmentation.getRemainingNoise(), segmentation.getDenoisingPasses(),
+                jsonSizes(parts).c_str(), jsonSeconds(seconds).c_str());
   }
   else {
     printPartsText("face", parts, seconds);

@@ -103,8 +103,8 @@ TEST_P(NoisyPsbCloud, KeepsItsPartsAndFindsTheNoise)
 // noisy faces leave medial foam that one segmentation cuts into extra parts. Bearing 346 is the
 // weakest: its two shaft cylinders differ by 15 % in radius, and once noise spreads each
 // cylinder's spheres over all radii their radius histograms come within the first merging
-// round's EMD limit. In this draw the two merge (2 parts where people see 3); in the bench
-// they merge in 3 of 4 draws at 0.5 % (docs/noise.md, "Limits").
+// round's EMD limit. In this draw the two merge (2 parts where people see 3), as in most noise
+// draws (docs/noise.md, "Limits").
 INSTANTIATE_TEST_SUITE_P(
     Models, NoisyPsbCloud,
     ::testing::Values(NoisyCloudCase{101, 0.0, 0.06, 12, 11170626562616678947ull},

@@ -36,6 +36,13 @@ TEST(SphereTree, MatchesBruteForceExactly)
   const SphereTree all(centers, radii), some(centers, radii, subset);
   EXPECT_EQ(all.size(), 700u);
   EXPECT_EQ(some.size(), 234u);
+  // Spheres are read back by the index given to the constructor, whatever the tree's order.
+  for (int i : {0, 3, 699}) {
+    EXPECT_EQ(all.center(i), centers[i]);
+    EXPECT_EQ(all.radius(i), radii[i]);
+    EXPECT_EQ(some.center(i), centers[i]);
+    EXPECT_EQ(some.radius(i), radii[i]);
+  }
   int hint = -1;
   for (int q = 0; q < 500; ++q) {
     const Eigen::Vector3d p = Eigen::Vector3d(unit(rng), unit(rng), unit(rng)) * 5.0 -

@@ -19,14 +19,14 @@ BallUnionVisibility::BallUnionVisibility(const std::vector<Eigen::Vector3d>& cen
     lo = lo.cwiseMin(centers[i] - Eigen::Vector3d::Constant(inflated[i]));
     hi = hi.cwiseMax(centers[i] + Eigen::Vector3d::Constant(inflated[i]));
   }
-  balls_ = std::make_shared<const Balls>(Balls{SphereTree(centers, inflated), centers, inflated});
+  tree_ = std::make_shared<const SphereTree>(centers, inflated);
   min_step_ = centers.empty() ? 0.0 : 1e-3 * (hi - lo).norm();
 }
 
 bool
 BallUnionVisibility::operator()(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const
 {
-  if (balls_->tree.empty())
+  if (tree_->empty())
     return false;
   const double length = (b - a).norm();
   const Eigen::Vector3d direction = length > 0.0 ? Eigen::Vector3d((b - a) / length)
@@ -35,18 +35,18 @@ BallUnionVisibility::operator()(const Eigen::Vector3d& a, const Eigen::Vector3d&
   int deepest = -1; // consecutive queries are close: start from the previous deepest ball
   while (true) {
     const Eigen::Vector3d q = a + std::min(t, length) * direction;
-    const double d =
-        balls_->tree.signedDistance(q, -std::numeric_limits<double>::infinity(), &deepest);
+    const double d = tree_->signedDistance(q, -std::numeric_limits<double>::infinity(), &deepest);
     if (!(d <= 0.0)) // outside (or NaN)
       return false;
     if (t >= length)
       return true;
     // The segment stays inside the deepest ball up to where it leaves that ball; stop half a
     // minimal step short of there, so that the minimal step still decides small gaps.
-    const Eigen::Vector3d w = q - balls_->centers[deepest];
-    const double r = balls_->radii[deepest];
+    const Eigen::Vector3d w = q - tree_->center(deepest);
+    const double r = tree_->radius(deepest);
     const double along = w.dot(direction);
-    const double exit = -along + std::sqrt(std::max(0.0, along * along - (w.squaredNorm() - r * r)));
+    const double exit =
+        -along + std::sqrt(std::max(0.0, along * along - (w.squaredNorm() - r * r)));
     t += std::max({-d, exit - 0.5 * min_step_, min_step_});
   }
 }

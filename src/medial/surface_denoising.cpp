@@ -177,6 +177,16 @@ estimateStride(std::size_t samples)
   return std::max<int>(4, static_cast<int>(samples / 5000));
 }
 
+/// σ̂ of the samples as they are after denoising: what the grower may take as noise.
+double
+remainingNoise(const std::vector<Eigen::Vector3f>& positions,
+               SampleNeighbourhoods& neighbourhoods, int threads)
+{
+  neighbourhoods.update(positions);
+  return estimateSurfaceNoise(positions, neighbourhoods, estimateStride(positions.size()), threads)
+      .sigma;
+}
+
 /// One pass of sided quadratic (MLS-like) smoothing: every sample moves onto the height field
 /// of its own side fitted to its wide neighbourhood (sidedHeightFit). A plane fit would pull
 /// thin tubes inwards by about a²/(4R) (a the neighbourhood's size); a quadratic does not.
@@ -431,12 +441,8 @@ denoiseCloudSurface(std::vector<Eigen::Vector3f>& positions, int k, int max_pass
 {
   NearestNeighbourhoods neighbourhoods(k);
   SurfaceDenoising result = denoiseSurface(positions, neighbourhoods, max_passes, threads);
-  if (result.passes > 0) {
-    neighbourhoods.update(positions);
-    result.remaining_sigma =
-        estimateSurfaceNoise(positions, neighbourhoods, estimateStride(positions.size()), threads)
-            .sigma;
-  }
+  if (result.passes > 0)
+    result.remaining_sigma = remainingNoise(positions, neighbourhoods, threads);
   return result;
 }
 
@@ -525,10 +531,7 @@ denoiseMeshSurface(std::vector<Eigen::Vector3d>& vertices,
   relaxTangentially(vertices, faces, 2.0 * result.noise.sigma, 5, threads);
   for (std::size_t i = 0; i < vertices.size(); ++i)
     positions[i] = vertices[i].cast<float>();
-  neighbourhoods.update(positions);
-  result.remaining_sigma =
-      estimateSurfaceNoise(positions, neighbourhoods, estimateStride(positions.size()), threads)
-          .sigma;
+  result.remaining_sigma = remainingNoise(positions, neighbourhoods, threads);
   return result;
 }
 

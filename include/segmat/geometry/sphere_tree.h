@@ -52,6 +52,21 @@ public:
     return centers_.empty();
   }
 
+  /** \brief Centre of sphere \a i, an index as given to the constructor (and as signedDistance()
+   * reports it) of a sphere in the tree. */
+  const Eigen::Vector3d&
+  center(int i) const
+  {
+    return centers_[position_[i]];
+  }
+
+  /** \brief Radius of sphere \a i (see center()). */
+  double
+  radius(int i) const
+  {
+    return radii_[position_[i]];
+  }
+
   /** \brief min over the spheres of |q − c| − r (+infinity when empty).
    * \param[in] q query point
    * \param[in] stop_below return as soon as a sphere with a value <= this is found (the value

@@ -41,13 +41,7 @@ public:
   operator()(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
 
 private:
-  struct Balls
-  {
-    SphereTree tree;
-    std::vector<Eigen::Vector3d> centers;
-    std::vector<double> radii; ///< inflated
-  };
-  std::shared_ptr<const Balls> balls_; ///< shared: the functor is copied into std::function
+  std::shared_ptr<const SphereTree> tree_; ///< shared: the functor is copied into std::function
   double min_step_ = 0.0;
 };
 
