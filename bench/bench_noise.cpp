@@ -25,9 +25,11 @@
  * orientation (MeshSegmentation::setPrincipalAxesFrame(false)).
  * PSB_DIR defaults to ../shared/data/psb-dev. Levels are in percent of the diagonal. --half tune
  * takes ids 1, 21, 41, ... (id mod 20 = 1), --half check ids 6, 26, 46, ... --write DIR writes
- * the noisy meshes as DIR/LEVEL/off/N.off (the input of segmat_mesh or scripts/eval_psb.sh).
+ * the noisy meshes as DIR/LEVEL/off/N.off (the input of segmat_mesh or scripts/eval_psb.sh),
+ * and the noisy clouds as DIR/LEVEL/xyz/N.xyz (x y z per line, the input of segmat_cloud).
  * Prints one row per shape and level on stderr, then a table per level: 1 − RI, parts per
- * shape, median and max seconds per shape (one thread, segmentation from the file's geometry).
+ * shape, median and max seconds per shape (one thread, segmentation from the file's geometry),
+ * and a table of each stage's median seconds per level (the segmentation's getStageSeconds()).
  */
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"
@@ -36,6 +38,7 @@
 
 #include <segmat/common/error.h>
 #include <segmat/evaluation/psb_metrics.h>
+#include <segmat/io/atomic_file.h>
 #include <segmat/io/off.h>
 #include <segmat/io/seg.h>
 #include <segmat/segmentation/mesh_segmentation.h>
@@ -61,6 +64,7 @@ struct Result
   int parts = 0;
   double seconds = 0.0;
   int draw = 0; ///< noise draw × jitter draws + jitter draw
+  segmat::StageTimings stages; ///< the segmentation's own stage times
 };
 
 std::vector<double>
@@ -95,6 +99,7 @@ segmentMesh(const segmat::TriangleMesh& clean, double level, std::uint32_t seed,
   const bool ok = seg.segment(labels);
   Result r;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.stages = seg.getStageSeconds();
   if (!ok)
     labels.assign(clean.numFaces(), 0);
   r.parts = int(std::set<int>(labels.begin(), labels.end()).size());
@@ -110,19 +115,67 @@ segmentMesh(const segmat::TriangleMesh& clean, double level, std::uint32_t seed,
 
 Result
 segmentCloud(const segmat::test::SampledCloud& clean, double level, std::uint32_t seed,
-             const std::vector<std::vector<int>>& humans)
+             const std::vector<std::vector<int>>& humans, const std::string& write_path)
 {
   segmat::test::SampledCloud noisy = clean;
   if (level > 0.0)
     segmat::test::addGaussianNoise(noisy, level / 100.0, seed);
+  if (!write_path.empty()) {
+    std::filesystem::create_directories(std::filesystem::path(write_path).parent_path());
+    segmat::io::writeFileAtomically(write_path, [&](std::ostream& out) {
+      char line[96];
+      for (const Eigen::Vector3f& p : noisy.points) {
+        std::snprintf(line, sizeof line, "%.9g %.9g %.9g\n", p.x(), p.y(), p.z());
+        out << line;
+      }
+    });
+  }
   const segmat::bench::CloudRun run = segmat::bench::segmentSampledCloud(noisy, {});
   Result r;
   r.seconds = run.seconds;
+  r.stages = run.stages;
   r.parts = run.parts;
   const std::vector<int>& labels = run.labels;
   for (const auto& human : humans)
     r.ri += segmat::test::randIndexError(labels, clean.pointLabels(human)) / double(humans.size());
   return r;
+}
+
+/// Median seconds of each stage per level: where the time of a noisy input goes.
+void
+printStageTable(const std::vector<double>& levels, const std::vector<std::vector<Result>>& results)
+{
+  std::vector<std::string> names; // in pipeline order, as the first run reports them
+  for (const auto& level : results)
+    for (const Result& r : level)
+      for (const segmat::StageTiming& stage : r.stages)
+        if (std::find(names.begin(), names.end(), stage.name) == names.end())
+          names.push_back(stage.name);
+  if (names.empty())
+    return;
+  std::printf("\nMedian seconds per stage (each stage's median over the level's runs):\n\n"
+              "| noise sigma (%% of diagonal) |");
+  for (const std::string& name : names)
+    std::printf(" %s |", name.c_str());
+  std::printf("\n|---|");
+  for (std::size_t k = 0; k < names.size(); ++k)
+    std::printf("---|");
+  std::printf("\n");
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    std::printf("| %g |", levels[l]);
+    for (const std::string& name : names) {
+      std::vector<double> seconds;
+      for (const Result& r : results[l]) {
+        double sum = 0.0; // a stage may be reported in parts (the clouds' retried medial axis)
+        for (const segmat::StageTiming& stage : r.stages)
+          if (stage.name == name)
+            sum += stage.seconds;
+        seconds.push_back(sum);
+      }
+      std::printf(" %.3f |", seconds.empty() ? 0.0 : segmat::bench::median(seconds));
+    }
+    std::printf("\n");
+  }
 }
 
 } // namespace
@@ -221,12 +274,13 @@ main(int argc, char** argv)
           if (!write_dir.empty()) {
             char level_name[32];
             std::snprintf(level_name, sizeof level_name, "%g", levels[l]);
-            write_path = write_dir + "/" + level_name + "/off/" + stem + ".off";
+            write_path = write_dir + "/" + level_name +
+                         (kind == "mesh" ? "/off/" + stem + ".off" : "/xyz/" + stem + ".xyz");
           }
           for (int d = 0; d < draws; ++d) {
             Result r = kind == "mesh" ? segmentMesh(mesh, levels[l], seed, std::uint32_t(d),
                                                     principal_axes, humans, write_path)
-                                      : segmentCloud(cloud, levels[l], seed, humans);
+                                      : segmentCloud(cloud, levels[l], seed, humans, write_path);
             r.draw = k * draws + d;
             results[l].push_back(r);
             std::fprintf(stderr, "%s %d sigma %g%% draw %d: 1-RI %.4f, %d parts, %.2f s\n",
@@ -278,5 +332,6 @@ main(int argc, char** argv)
     }
     std::printf("\n");
   }
+  printStageTable(levels, results);
   return 0;
 }

@@ -35,6 +35,7 @@ struct CloudRun
   std::vector<int> labels; ///< one per point (all 0 when the segmentation failed)
   int parts = 0;           ///< 0 when it failed
   double seconds = 0.0;    ///< wall time of segment()
+  StageTimings stages;     ///< CloudSegmentation::getStageSeconds()
 };
 
 inline CloudRun
@@ -68,6 +69,7 @@ segmentSampledCloud(const test::SampledCloud& cloud, const CloudRunSettings& set
   CloudRun run;
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.parts = ok ? int(parts.size()) : 0;
+  run.stages = seg.getStageSeconds();
   run.labels = ok ? seg.getLabels() : std::vector<int>(cloud.size(), 0);
   return run;
 }
