@@ -100,8 +100,8 @@ TEST_P(NoisyPsbCloud, KeepsItsPartsAndFindsTheNoise)
 // back still grow into one part (1 − RI near 0.4; bench_noise --kind cloud --models 101
 // --levels 0.5 with --seed-offset 0..5), and this draw is one of them. Glasses 41: two thin lens
 // plates joined at the bridge. Box 321, a box with a smaller box on top, is a weak case: its
-// noisy faces leave medial foam that one segmentation cuts into extra parts. Bearing 346 is the
-// weakest: its two shaft cylinders differ by 15 % in radius, and once noise spreads each
+// noisy faces leave medial foam that one segmentation cuts into extra parts. Bearing 346 is weak
+// too: its two shaft cylinders differ by 15 % in radius, and once noise spreads each
 // cylinder's spheres over all radii their radius histograms come within the first merging
 // round's EMD limit. In this draw the two merge (2 parts where people see 3), as in most noise
 // draws (docs/noise.md, "Limits").
