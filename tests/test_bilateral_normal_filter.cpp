@@ -191,3 +191,45 @@ TEST(BilateralNormalFilter, SameResultOnOneAndTwoThreads)
 }
 
 } // namespace
+
+// The octahedron's faces, by their corners' signs: a face shares an edge with the three faces
+// that differ in one sign, a single vertex with the three that differ in two, and nothing with
+// its opposite. A face repeated or with a corner out of range has no neighbours and is no one's.
+TEST(BilateralNormalFilter, FaceNeighbourhoodsOfAnOctahedron)
+{
+  // Vertices ±x (0, 1), ±y (2, 3), ±z (4, 5); face (sx, sy, sz) joins one vertex per axis.
+  std::vector<Eigen::Vector3i> faces;
+  for (int s = 0; s < 8; ++s)
+    faces.emplace_back((s & 1) ? 1 : 0, (s & 2) ? 3 : 2, (s & 4) ? 5 : 4);
+  faces.emplace_back(0, 0, 2);  // 8: degenerate
+  faces.emplace_back(0, 2, 17); // 9: out of range
+  const segmat::detail::FaceNeighbourhoods around(faces, 6);
+  ASSERT_EQ(around.first.size(), faces.size() + 1);
+  for (int f = 0; f < 8; ++f) {
+    std::vector<int> edge, corner;
+    for (std::size_t a = around.first[f]; a < around.first[f + 1]; ++a) {
+      const int j = around.neighbours[a];
+      ASSERT_LT(around.mirror[a], around.neighbours.size());
+      EXPECT_EQ(around.neighbours[around.mirror[a]], f);
+      (around.shares_edge[a] ? edge : corner).push_back(j);
+    }
+    std::vector<int> want_edge, want_corner;
+    for (int g = 0; g < 8; ++g) {
+      const int differ = __builtin_popcount(unsigned(f ^ g));
+      if (differ == 1)
+        want_edge.push_back(g);
+      else if (differ == 2)
+        want_corner.push_back(g);
+    }
+    EXPECT_EQ(edge, want_edge) << "face " << f;
+    EXPECT_EQ(corner, want_corner) << "face " << f;
+  }
+  EXPECT_EQ(around.first[9], around.first[8]);
+  EXPECT_EQ(around.first[10], around.first[9]);
+  EXPECT_FALSE(around.valid[8]);
+  EXPECT_FALSE(around.valid[9]);
+  // Vertex 0 (+x) lies on the four faces with sx = 0, ascending.
+  const std::vector<int> on_x(around.vertex_faces.begin() + around.vertex_first[0],
+                              around.vertex_faces.begin() + around.vertex_first[1]);
+  EXPECT_EQ(on_x, (std::vector<int>{0, 2, 4, 6}));
+}

@@ -55,40 +55,92 @@ faceGeometry(const std::vector<Eigen::Vector3d>& vertices,
 
 } // namespace
 
+FaceNeighbourhoods::FaceNeighbourhoods(const std::vector<Eigen::Vector3i>& faces,
+                                       std::size_t vertex_count)
+{
+  const std::size_t nf = faces.size();
+  valid.assign(nf, 0);
+  vertex_first.assign(vertex_count + 1, 0);
+  for (std::size_t f = 0; f < nf; ++f) {
+    valid[f] = validFace(faces[f], vertex_count);
+    if (valid[f])
+      for (int c = 0; c < 3; ++c)
+        ++vertex_first[faces[f][c] + 1];
+  }
+  for (std::size_t v = 0; v < vertex_count; ++v)
+    vertex_first[v + 1] += vertex_first[v];
+  vertex_faces.resize(vertex_first[vertex_count]);
+  std::vector<std::size_t> fill(vertex_first.begin(), vertex_first.end() - 1);
+  for (std::size_t f = 0; f < nf; ++f)
+    if (valid[f])
+      for (int c = 0; c < 3; ++c)
+        vertex_faces[fill[faces[f][c]]++] = int(f);
+  first.assign(nf + 1, 0);
+  neighbours.reserve(12 * nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    first[f] = neighbours.size();
+    if (!valid[f])
+      continue;
+    // Merge of the three corners' ascending face lists, without repeats and without f.
+    std::size_t at[3], end[3];
+    for (int c = 0; c < 3; ++c) {
+      at[c] = vertex_first[faces[f][c]];
+      end[c] = vertex_first[faces[f][c] + 1];
+    }
+    for (;;) {
+      int next = std::numeric_limits<int>::max();
+      for (int c = 0; c < 3; ++c)
+        if (at[c] < end[c])
+          next = std::min(next, vertex_faces[at[c]]);
+      if (next == std::numeric_limits<int>::max())
+        break;
+      for (int c = 0; c < 3; ++c)
+        if (at[c] < end[c] && vertex_faces[at[c]] == next)
+          ++at[c];
+      if (next != int(f))
+        neighbours.push_back(next);
+    }
+  }
+  first[nf] = neighbours.size();
+  mirror.resize(neighbours.size());
+  shares_edge.resize(neighbours.size());
+  for (std::size_t f = 0; f < nf; ++f)
+    for (std::size_t a = first[f]; a < first[f + 1]; ++a) {
+      const int j = neighbours[a];
+      // The lists are ascending and symmetric: f is in j's list.
+      mirror[a] = std::size_t(
+          std::lower_bound(neighbours.begin() + first[j], neighbours.begin() + first[j + 1],
+                           int(f)) -
+          neighbours.begin());
+      int shared = 0;
+      for (int c = 0; c < 3; ++c)
+        for (int d = 0; d < 3; ++d)
+          shared += faces[f][c] == faces[j][d];
+      shares_edge[a] = shared == 2;
+    }
+}
+
 NormalFiltering
 bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
                       const std::vector<Eigen::Vector3i>& faces,
                       const NormalFilterSettings& settings, int threads)
 {
+  return bilateralNormalFilter(vertices, faces, FaceNeighbourhoods(faces, vertices.size()),
+                               settings, threads);
+}
+
+NormalFiltering
+bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
+                      const std::vector<Eigen::Vector3i>& faces,
+                      const FaceNeighbourhoods& around, const NormalFilterSettings& settings,
+                      int threads)
+{
   NormalFiltering result;
   const std::size_t nv = vertices.size(), nf = faces.size();
-  std::vector<char> valid(nf, 0);
-  std::vector<std::vector<int>> vertex_faces(nv);
-  for (std::size_t f = 0; f < nf; ++f) {
-    valid[f] = validFace(faces[f], nv);
-    if (valid[f])
-      for (int c = 0; c < 3; ++c)
-        vertex_faces[faces[f][c]].push_back(int(f));
-  }
-  // Neighbours of a face: every other face that shares a vertex with it, ascending; face f's
-  // are neighbours[first[f]] .. neighbours[first[f + 1] - 1] (one array: no allocation per face).
-  std::vector<std::size_t> first(nf + 1, 0);
-  std::vector<int> neighbours, around;
-  for (std::size_t f = 0; f < nf; ++f) {
-    first[f] = neighbours.size();
-    if (!valid[f])
-      continue;
-    around.clear();
-    for (int c = 0; c < 3; ++c)
-      around.insert(around.end(), vertex_faces[faces[f][c]].begin(),
-                    vertex_faces[faces[f][c]].end());
-    std::sort(around.begin(), around.end());
-    around.erase(std::unique(around.begin(), around.end()), around.end());
-    for (int j : around)
-      if (j != int(f))
-        neighbours.push_back(j);
-  }
-  first[nf] = neighbours.size();
+  const std::vector<char>& valid = around.valid;
+  const std::vector<std::size_t>& first = around.first;
+  const std::vector<int>& neighbours = around.neighbours;
+  const std::vector<std::size_t>& mirror = around.mirror;
 
   FaceGeometry g;
   faceGeometry(vertices, faces, valid, g);
@@ -99,11 +151,7 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
   for (std::size_t f = 0; f < nf; ++f)
     for (std::size_t a = first[f]; a < first[f + 1]; ++a) {
       const int j = neighbours[a];
-      int shared = 0;
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b)
-          shared += faces[f][a] == faces[j][b];
-      if (shared == 2) {
+      if (around.shares_edge[a]) {
         distance_sum += (g.centroids[f] - g.centroids[j]).norm();
         ++pairs;
         if (settings.range_from_normals && !g.normals[f].isZero() && !g.normals[j].isZero())
@@ -127,14 +175,21 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
   };
   const double still = 1.0 - std::cos(settings.still_degrees * M_PI / 180.0);
 
-  // The centroids stay put while the normals are filtered: area × spatial weight once.
+  // The centroids stay put while the normals are filtered: area × spatial weight once. Both
+  // Gaussians are symmetric, so each pair's is computed once, by its lower face.
   std::vector<double> fixed(neighbours.size());
-  for (std::size_t f = 0; f < nf; ++f)
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (long f = 0; f < long(nf); ++f)
     for (std::size_t a = first[f]; a < first[f + 1]; ++a) {
       const int j = neighbours[a];
-      fixed[a] = g.areas[j] * std::exp(-(g.centroids[f] - g.centroids[j]).squaredNorm() * inv_s);
+      if (j < f)
+        continue;
+      const double spatial = std::exp(-(g.centroids[f] - g.centroids[j]).squaredNorm() * inv_s);
+      fixed[a] = g.areas[j] * spatial;
+      fixed[mirror[a]] = g.areas[f] * spatial;
     }
   std::vector<Eigen::Vector3d> normals = g.normals, next(nf);
+  std::vector<float> range_weight(neighbours.size());
   // Per-face turns summed in face order afterwards: a parallel reduction would add them in an
   // order that depends on the thread count, and the stopping test could then differ.
   constexpr double kNone = std::numeric_limits<double>::quiet_NaN(); // a face without normal
@@ -148,6 +203,18 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
     const double inv_r = 1.0 / (2.0 * range_sigma * range_sigma);
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (long f = 0; f < long(nf); ++f) {
+      if (normals[f].isZero())
+        continue;
+      for (std::size_t a = first[f]; a < first[f + 1]; ++a) {
+        const int j = neighbours[a];
+        if (j < f || normals[j].isZero())
+          continue;
+        const double dr = (normals[f] - normals[j]).squaredNorm();
+        range_weight[a] = range_weight[mirror[a]] = std::exp(float(-dr * inv_r));
+      }
+    }
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (long f = 0; f < long(nf); ++f) {
       next[f] = normals[f];
       turn[f] = kNone;
       if (normals[f].isZero())
@@ -157,8 +224,7 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
         const int j = neighbours[a];
         if (normals[j].isZero())
           continue;
-        const double dr = (normals[f] - normals[j]).squaredNorm();
-        sum += fixed[a] * std::exp(float(-dr * inv_r)) * normals[j];
+        sum += fixed[a] * range_weight[a] * normals[j];
       }
       if (sum.norm() > 0.0)
         next[f] = sum.normalized();
@@ -189,12 +255,15 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (long v = 0; v < long(nv); ++v) {
       moved[v] = vertices[v];
-      if (vertex_faces[v].empty())
+      const std::size_t begin = around.vertex_first[v], end = around.vertex_first[v + 1];
+      if (begin == end)
         continue;
       Eigen::Vector3d step = Eigen::Vector3d::Zero();
-      for (int f : vertex_faces[v])
+      for (std::size_t a = begin; a < end; ++a) {
+        const int f = around.vertex_faces[a];
         step += normals[f] * normals[f].dot(g.centroids[f] - vertices[v]);
-      moved[v] += step / double(vertex_faces[v].size());
+      }
+      moved[v] += step / double(end - begin);
     }
     vertices.swap(moved);
   }

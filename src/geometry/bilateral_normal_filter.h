@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <vector>
 
 namespace segmat {
@@ -39,6 +40,26 @@ struct NormalFiltering
   double range_sigma = 0.0;   ///< σ_r of the first iteration
 };
 
+/** \brief The faces around each face, built once for every bilateralNormalFilter() call on the
+ * same connectivity. */
+struct FaceNeighbourhoods
+{
+  /// Builds the lists of \a faces over \a vertex_count vertices.
+  FaceNeighbourhoods(const std::vector<Eigen::Vector3i>& faces, std::size_t vertex_count);
+
+  std::vector<char> valid; ///< per face: three distinct vertices in range
+  /// Faces of vertex v: vertex_faces[vertex_first[v]] .. [vertex_first[v + 1] − 1], ascending.
+  std::vector<std::size_t> vertex_first;
+  std::vector<int> vertex_faces;
+  /// Every other face sharing a vertex with face f: neighbours[first[f]] .. [first[f + 1] − 1],
+  /// ascending. mirror[a] is the entry of the same pair in the other face's list, and
+  /// shares_edge[a] whether the pair shares two vertices.
+  std::vector<std::size_t> first;
+  std::vector<int> neighbours;
+  std::vector<std::size_t> mirror;
+  std::vector<char> shares_edge;
+};
+
 /** \brief Moves \a vertices so that the faces follow their bilaterally filtered normals.
  *
  * Each iteration replaces a face's normal by the average of its edge-and-vertex neighbours'
@@ -55,6 +76,13 @@ NormalFiltering
 bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
                       const std::vector<Eigen::Vector3i>& faces,
                       const NormalFilterSettings& settings, int threads);
+
+/** \brief bilateralNormalFilter() with the neighbourhoods of \a faces built beforehand. */
+NormalFiltering
+bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
+                      const std::vector<Eigen::Vector3i>& faces,
+                      const FaceNeighbourhoods& around, const NormalFilterSettings& settings,
+                      int threads);
 
 } // namespace detail
 } // namespace segmat

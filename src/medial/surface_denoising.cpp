@@ -511,9 +511,10 @@ denoiseMeshSurface(std::vector<Eigen::Vector3d>& vertices,
   // normal filtering first, with σ_r as wide as the turn that the noise puts between adjacent
   // faces, removes most of the noise; the passes then fit with the band of what is left, and
   // the surface ends closer to the clean one (docs/noise.md).
+  const FaceNeighbourhoods around(faces, vertices.size());
   NormalFilterSettings first;
   first.range_from_normals = true;
-  bilateralNormalFilter(vertices, faces, first, threads);
+  bilateralNormalFilter(vertices, faces, around, first, threads);
   for (std::size_t i = 0; i < vertices.size(); ++i)
     positions[i] = vertices[i].cast<float>();
   result = denoiseSurface(positions, neighbourhoods, max_passes, threads, 0.0);
@@ -524,7 +525,7 @@ denoiseMeshSurface(std::vector<Eigen::Vector3d>& vertices,
   // The quadratic passes leave CAD faces and the rims of thin parts wavy and their creases
   // rounded. Bilateral normal filtering with the fixed σ_r flattens what is nearly flat and
   // keeps every turn much larger than 20°, so faces become planes again.
-  result.normal_iterations = bilateralNormalFilter(vertices, faces, {}, threads).normal_iterations;
+  result.normal_iterations = bilateralNormalFilter(vertices, faces, around, {}, threads).normal_iterations;
   // The passes and the filter move vertices across the surface only; the noise along it stays
   // and stretches edges, and the sampler would fill them with samples that make the MAT (and
   // with it the structured MAT's target) grow with the noise. Two σ undoes most of it.
