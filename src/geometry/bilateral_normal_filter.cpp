@@ -77,6 +77,7 @@ FaceNeighbourhoods::FaceNeighbourhoods(const std::vector<Eigen::Vector3i>& faces
         vertex_faces[fill[faces[f][c]]++] = int(f);
   first.assign(nf + 1, 0);
   neighbours.reserve(12 * nf);
+  shares_edge.reserve(12 * nf);
   for (std::size_t f = 0; f < nf; ++f) {
     first[f] = neighbours.size();
     if (!valid[f])
@@ -94,29 +95,27 @@ FaceNeighbourhoods::FaceNeighbourhoods(const std::vector<Eigen::Vector3i>& faces
           next = std::min(next, vertex_faces[at[c]]);
       if (next == std::numeric_limits<int>::max())
         break;
+      int shared = 0; // corners of f that face `next` has
       for (int c = 0; c < 3; ++c)
-        if (at[c] < end[c] && vertex_faces[at[c]] == next)
+        if (at[c] < end[c] && vertex_faces[at[c]] == next) {
           ++at[c];
-      if (next != int(f))
+          ++shared;
+        }
+      if (next != int(f)) {
         neighbours.push_back(next);
+        shares_edge.push_back(shared == 2);
+      }
     }
   }
   first[nf] = neighbours.size();
+  // The lists are symmetric and ascending: visiting the faces in ascending order, the k-th
+  // visit to j's list comes from j's k-th neighbour.
   mirror.resize(neighbours.size());
-  shares_edge.resize(neighbours.size());
+  std::vector<std::size_t> visits(nf, 0);
   for (std::size_t f = 0; f < nf; ++f)
     for (std::size_t a = first[f]; a < first[f + 1]; ++a) {
       const int j = neighbours[a];
-      // The lists are ascending and symmetric: f is in j's list.
-      mirror[a] = std::size_t(
-          std::lower_bound(neighbours.begin() + first[j], neighbours.begin() + first[j + 1],
-                           int(f)) -
-          neighbours.begin());
-      int shared = 0;
-      for (int c = 0; c < 3; ++c)
-        for (int d = 0; d < 3; ++d)
-          shared += faces[f][c] == faces[j][d];
-      shares_edge[a] = shared == 2;
+      mirror[a] = first[j] + visits[j]++;
     }
 }
 
