@@ -4,7 +4,8 @@
  *
  * Bilateral normal filtering (src/geometry/bilateral_normal_filter.*) on shapes whose surface is
  * known: a box keeps its flat faces and sharp edges, a sphere gets closer to the sphere, a clean
- * box does not move, and under heavy noise σ_r follows the noise that remains.
+ * box does not move, and under heavy noise σ_r follows the noise that remains. The faces
+ * around each face (FaceNeighbourhoods) are checked on an octahedron, where they are known.
  */
 #include "../src/geometry/bilateral_normal_filter.h"
 
