@@ -63,7 +63,7 @@ struct Result
   double ri = 0.0;
   int parts = 0;
   double seconds = 0.0;
-  int draw = 0; ///< noise draw × jitter draws + jitter draw
+  int draw = 0;                ///< noise draw × jitter draws + jitter draw
   segmat::StageTimings stages; ///< the segmentation's own stage times
 };
 

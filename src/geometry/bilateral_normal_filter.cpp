@@ -130,9 +130,8 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
 
 NormalFiltering
 bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
-                      const std::vector<Eigen::Vector3i>& faces,
-                      const FaceNeighbourhoods& around, const NormalFilterSettings& settings,
-                      int threads)
+                      const std::vector<Eigen::Vector3i>& faces, const FaceNeighbourhoods& around,
+                      const NormalFilterSettings& settings, int threads)
 {
   NormalFiltering result;
   const std::size_t nv = vertices.size(), nf = faces.size();

@@ -80,9 +80,8 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
 /** \brief bilateralNormalFilter() with the neighbourhoods of \a faces built beforehand. */
 NormalFiltering
 bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
-                      const std::vector<Eigen::Vector3i>& faces,
-                      const FaceNeighbourhoods& around, const NormalFilterSettings& settings,
-                      int threads);
+                      const std::vector<Eigen::Vector3i>& faces, const FaceNeighbourhoods& around,
+                      const NormalFilterSettings& settings, int threads);
 
 } // namespace detail
 } // namespace segmat

@@ -525,7 +525,8 @@ denoiseMeshSurface(std::vector<Eigen::Vector3d>& vertices,
   // The quadratic passes leave CAD faces and the rims of thin parts wavy and their creases
   // rounded. Bilateral normal filtering with the fixed σ_r flattens what is nearly flat and
   // keeps every turn much larger than 20°, so faces become planes again.
-  result.normal_iterations = bilateralNormalFilter(vertices, faces, around, {}, threads).normal_iterations;
+  result.normal_iterations =
+      bilateralNormalFilter(vertices, faces, around, {}, threads).normal_iterations;
   // The passes and the filter move vertices across the surface only; the noise along it stays
   // and stretches edges, and the sampler would fill them with samples that make the MAT (and
   // with it the structured MAT's target) grow with the noise. Two σ undoes most of it.
