@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 using namespace segmat;
 
@@ -160,6 +161,34 @@ TEST(PatchMerging, MergeRoundJoinsSimilarAdjacentVisiblePatches)
 TEST(PatchMerging, DefaultRounds)
 {
   ASSERT_EQ(defaultMergeRounds().size(), 3u);
-  EXPECT_EQ(defaultMergeRounds()[2].visibility_ratio, 1.0);
+  EXPECT_EQ(defaultMergeRounds()[2].visibility_ratio, 0.99);
   EXPECT_EQ(defaultMergeRounds()[2].emd_factor, 0.3);
+}
+
+// The last round's ratio is a fraction, not "every segment": of two patches of 30 spheres each
+// (every third sampled: 10 × 10 = 100 segments), one blocked segment still lets them join there,
+// two do not.
+TEST(PatchMerging, LastRoundToleratesOneSegmentInAHundred)
+{
+  std::vector<Eigen::Vector3d> c;
+  std::vector<double> r;
+  std::vector<int> a, b;
+  for (int i = 0; i < 30; ++i) {
+    a.push_back(int(c.size()));
+    c.emplace_back(0.1 * i, 0.0, 0.0);
+    r.push_back(0.05);
+    b.push_back(int(c.size()));
+    c.emplace_back(0.1 * i, 1.0, 0.0);
+    r.push_back(0.05);
+  }
+  const double ratio = defaultMergeRounds()[2].visibility_ratio;
+  for (const int blocked : {1, 2}) {
+    auto calls = std::make_shared<int>(0);
+    const SegmentVisibility few_blocked = [calls, blocked](const Eigen::Vector3d&,
+                                                           const Eigen::Vector3d&) {
+      return ++*calls > blocked; // the first `blocked` segments are blocked
+    };
+    EXPECT_EQ(patchesSeeEachOther(a, b, c, r, few_blocked, ratio, 3), blocked == 1)
+        << blocked << " blocked segments";
+  }
 }

@@ -10,12 +10,13 @@
 namespace segmat {
 
 BallUnionVisibility::BallUnionVisibility(const std::vector<Eigen::Vector3d>& centers,
-                                         const std::vector<double>& radii, double inflation)
+                                         const std::vector<double>& radii, double inflation,
+                                         double margin)
 {
   std::vector<double> inflated(radii.size());
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max()), hi = -lo;
   for (std::size_t i = 0; i < radii.size(); ++i) {
-    inflated[i] = inflation * radii[i];
+    inflated[i] = inflation * radii[i] + margin;
     lo = lo.cwiseMin(centers[i] - Eigen::Vector3d::Constant(inflated[i]));
     hi = hi.cwiseMax(centers[i] + Eigen::Vector3d::Constant(inflated[i]));
   }

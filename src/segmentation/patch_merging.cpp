@@ -171,7 +171,10 @@ patchesSeeEachOther(const std::vector<int>& spheres_a, const std::vector<int>& s
 const std::vector<MergeRound>&
 defaultMergeRounds()
 {
-  static const std::vector<MergeRound> rounds{{0.8, 0.1}, {0.9, 0.2}, {1.0, 0.3}};
+  // The last round asks for 99 % rather than all of the segments: "all of N random segments"
+  // fails more often the more segments two large patches sample, so a shallow dent of a
+  // nearly convex part (a fish's body) split it in some jitter draws and not in others.
+  static const std::vector<MergeRound> rounds{{0.8, 0.1}, {0.9, 0.2}, {0.99, 0.3}};
   return rounds;
 }
 

@@ -27,14 +27,17 @@ namespace segmat {
  * before that crossing (at least −d and at least the minimal step, 1e-3 of the balls' extent,
  * so it cannot stall on a boundary; gaps shorter than a minimal step may be bridged).
  * ρ > 1 (default 1.1) bridges the small gaps between neighbouring balls of a sampled medial
- * axis.
+ * axis; a margin m adds a length to every radius (r·ρ + m), for radii known only up to the
+ * noise of the samples they came from.
  */
 class BallUnionVisibility
 {
 public:
-  /** \brief Build over the balls (\a centers, \a radii), radii inflated by \a inflation. */
+  /** \brief Build over the balls (\a centers, \a radii), each radius r taken as
+   * r · \a inflation + \a margin. */
   BallUnionVisibility(const std::vector<Eigen::Vector3d>& centers,
-                      const std::vector<double>& radii, double inflation = 1.1);
+                      const std::vector<double>& radii, double inflation = 1.1,
+                      double margin = 0.0);
 
   /** \brief True when the segment [a, b] stays inside the (inflated) union of the balls. */
   bool
