@@ -151,10 +151,9 @@ segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
   // cloud the balls' radii err with the noise, and the union of a thin part has gaps. The
   // sparse balls of a meso-skeleton need the inflation to bridge their gaps.
   if (visibility)
-    see = graph->hasPrimitives()
-              ? BallUnionVisibility(graph->centers(), graph->radii(), 1.0,
-                                    6.0 * grower.getRadiusTolerance())
-              : BallUnionVisibility(graph->centers(), graph->radii());
+    see = graph->hasPrimitives() ? BallUnionVisibility(graph->centers(), graph->radii(), 1.0,
+                                                       6.0 * grower.getRadiusTolerance())
+                                 : BallUnionVisibility(graph->centers(), graph->radii());
   grower.setSegmentVisibility(see);
   std::vector<pcl::PointIndices> grown;
   if (!grower.extract(grown) || grown.empty()) {

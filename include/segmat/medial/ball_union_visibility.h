@@ -35,9 +35,8 @@ class BallUnionVisibility
 public:
   /** \brief Build over the balls (\a centers, \a radii), each radius r taken as
    * r · \a inflation + \a margin. */
-  BallUnionVisibility(const std::vector<Eigen::Vector3d>& centers,
-                      const std::vector<double>& radii, double inflation = 1.1,
-                      double margin = 0.0);
+  BallUnionVisibility(const std::vector<Eigen::Vector3d>& centers, const std::vector<double>& radii,
+                      double inflation = 1.1, double margin = 0.0);
 
   /** \brief True when the segment [a, b] stays inside the (inflated) union of the balls. */
   bool
