@@ -36,6 +36,19 @@ TEST(BallUnionVisibility, TwoBalls)
   EXPECT_FALSE(BallUnionVisibility({}, {})(V(0, 0, 0), V(1, 0, 0)));
 }
 
+// The same balls widened by a margin m (radius 1 + m): at y = 0.9 they reach
+// x <= sqrt((1 + m)² − 0.81), past the midpoint 0.75 once (1 + m)² > 1.3725, i.e. m > 0.1715.
+// A point at height 1.15 above a centre lies inside with a margin of 0.2, outside with 0.1.
+TEST(BallUnionVisibility, MarginWidensEveryBall)
+{
+  const std::vector<V> centers{V(0, 0, 0), V(1.5, 0, 0)};
+  const std::vector<double> radii{1.0, 1.0};
+  EXPECT_FALSE(BallUnionVisibility(centers, radii, 1.0, 0.16)(V(0, 0.9, 0), V(1.5, 0.9, 0)));
+  EXPECT_TRUE(BallUnionVisibility(centers, radii, 1.0, 0.18)(V(0, 0.9, 0), V(1.5, 0.9, 0)));
+  EXPECT_TRUE(BallUnionVisibility(centers, radii, 1.0, 0.2)(V(0, 1.15, 0), V(0, 1.15, 0)));
+  EXPECT_FALSE(BallUnionVisibility(centers, radii, 1.0, 0.1)(V(0, 1.15, 0), V(0, 1.15, 0)));
+}
+
 // 200 balls of radius 0.1 every 0.05 along x (a tube 10 long). At height y the balls' chords
 // are 2·sqrt(0.01 − y²) long: 0.087 at y = 0.09, which covers the 0.05 spacing; 0.028 at
 // y = 0.099, which leaves gaps of 0.022 — twice the minimal step of the walk (1e-3 of the
