@@ -8,9 +8,10 @@
 // vertex positions updated to fit the filtered normals (Sun, Rosin, Martin, Langbein, "Fast and
 // Effective Feature-Preserving Mesh Denoising", IEEE TVCG 2007).
 
+#include "face_neighbourhoods.h"
+
 #include <Eigen/Core>
 
-#include <cstddef>
 #include <vector>
 
 namespace segmat {
@@ -38,26 +39,6 @@ struct NormalFiltering
   int normal_iterations = 0;  ///< normal filtering iterations run
   double spatial_sigma = 0.0; ///< σ_s: mean distance between the centroids of adjacent faces
   double range_sigma = 0.0;   ///< σ_r of the first iteration
-};
-
-/** \brief The faces around each face, built once for every bilateralNormalFilter() call on the
- * same connectivity. */
-struct FaceNeighbourhoods
-{
-  /// Builds the lists of \a faces over \a vertex_count vertices.
-  FaceNeighbourhoods(const std::vector<Eigen::Vector3i>& faces, std::size_t vertex_count);
-
-  std::vector<char> valid; ///< per face: three distinct vertices in range
-  /// Faces of vertex v: vertex_faces[vertex_first[v]] .. [vertex_first[v + 1] − 1], ascending.
-  std::vector<std::size_t> vertex_first;
-  std::vector<int> vertex_faces;
-  /// Every other face sharing a vertex with face f: neighbours[first[f]] .. [first[f + 1] − 1],
-  /// ascending. mirror[a] is the entry of the same pair in the other face's list, and
-  /// shares_edge[a] whether the pair shares two vertices.
-  std::vector<std::size_t> first;
-  std::vector<int> neighbours;
-  std::vector<std::size_t> mirror;
-  std::vector<char> shares_edge;
 };
 
 /** \brief Moves \a vertices so that the faces follow their bilaterally filtered normals.

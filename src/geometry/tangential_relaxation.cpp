@@ -20,18 +20,24 @@ relaxTangentially(std::vector<Eigen::Vector3d>& vertices,
                   const std::vector<Eigen::Vector3i>& faces, double max_move, int iterations,
                   int threads)
 {
+  relaxTangentially(vertices, faces, FaceNeighbourhoods(faces, vertices.size()), max_move,
+                    iterations, threads);
+}
+
+void
+relaxTangentially(std::vector<Eigen::Vector3d>& vertices, const std::vector<Eigen::Vector3i>& faces,
+                  const FaceNeighbourhoods& around, double max_move, int iterations, int threads)
+{
   const long nv = static_cast<long>(vertices.size());
-  // Incident faces of each vertex, and every face side as an (smaller, larger) edge record.
-  std::vector<std::vector<int>> ring(nv), incident(nv);
+  // Every side of a valid face as an (smaller, larger) edge record.
+  std::vector<std::vector<int>> ring(nv);
   std::vector<std::array<int, 2>> sides;
   for (std::size_t f = 0; f < faces.size(); ++f) {
-    const Eigen::Vector3i& t = faces[f];
-    if (t.minCoeff() < 0 || t.maxCoeff() >= nv || t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+    if (!around.valid[f])
       continue;
-    for (int c = 0; c < 3; ++c) {
-      incident[t[c]].push_back(static_cast<int>(f));
+    const Eigen::Vector3i& t = faces[f];
+    for (int c = 0; c < 3; ++c)
       sides.push_back({std::min(t[c], t[(c + 1) % 3]), std::max(t[c], t[(c + 1) % 3])});
-    }
   }
   // Edge neighbours from the distinct edges. A vertex on an edge of one face (a hole's rim) or
   // of three and more (non-manifold) stays: its neighbours' mean lies off to one side, and
@@ -71,7 +77,8 @@ relaxTangentially(std::vector<Eigen::Vector3d>& vertices,
       if (ring[v].empty())
         continue;
       Eigen::Matrix3d tensor = Eigen::Matrix3d::Zero();
-      for (int f : incident[v]) {
+      for (std::size_t a = around.vertex_first[v]; a < around.vertex_first[v + 1]; ++a) {
+        const int f = around.vertex_faces[a];
         const double area = area_normals[f].norm();
         if (area > 0.0)
           tensor += area_normals[f] * area_normals[f].transpose() / area; // a n nᵀ

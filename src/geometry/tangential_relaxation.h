@@ -6,6 +6,8 @@
 // Private to src/: evens out the spacing of a denoised mesh's vertices without changing its
 // shape (the tangential half of vertex noise).
 
+#include "face_neighbourhoods.h"
+
 #include <Eigen/Core>
 
 #include <vector>
@@ -31,6 +33,11 @@ void
 relaxTangentially(std::vector<Eigen::Vector3d>& vertices,
                   const std::vector<Eigen::Vector3i>& faces, double max_move, int iterations,
                   int threads);
+
+/** \brief relaxTangentially() with the faces around each vertex built beforehand. */
+void
+relaxTangentially(std::vector<Eigen::Vector3d>& vertices, const std::vector<Eigen::Vector3i>& faces,
+                  const FaceNeighbourhoods& around, double max_move, int iterations, int threads);
 
 } // namespace detail
 } // namespace segmat

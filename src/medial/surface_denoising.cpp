@@ -530,7 +530,7 @@ denoiseMeshSurface(std::vector<Eigen::Vector3d>& vertices,
   // The passes and the filter move vertices across the surface only; the noise along it stays
   // and stretches edges, and the sampler would fill them with samples that make the MAT (and
   // with it the structured MAT's target) grow with the noise. Two σ undoes most of it.
-  relaxTangentially(vertices, faces, 2.0 * result.noise.sigma, 5, threads);
+  relaxTangentially(vertices, faces, around, 2.0 * result.noise.sigma, 5, threads);
   for (std::size_t i = 0; i < vertices.size(); ++i)
     positions[i] = vertices[i].cast<float>();
   result.remaining_sigma = remainingNoise(positions, neighbourhoods, threads);
