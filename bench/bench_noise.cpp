@@ -27,6 +27,11 @@
  * takes ids 1, 21, 41, ... (id mod 20 = 1), --half check ids 6, 26, 46, ... --write DIR writes
  * the noisy meshes as DIR/LEVEL/off/N.off (the input of segmat_mesh or scripts/eval_psb.sh),
  * and the noisy clouds as DIR/LEVEL/xyz/N.xyz (x y z per line, the input of segmat_cloud).
+ * Two options for clouds measure what denoising leaves (docs/noise.md, "Limits"):
+ * --surface-error adds a column with the median distance of the smoothed working points
+ * (CloudPreprocessing, as the segmentation computes them) to the clean mesh, in % of the
+ * diagonal; --true-surface moves every noisy point onto the nearest point of the clean mesh
+ * before segmenting, which is what a perfect denoiser would hand on.
  * Prints one row per shape and level on stderr, then a table per level: 1 − RI, parts per
  * shape, median and max seconds per shape (one thread, segmentation from the file's geometry),
  * and a table of each stage's median seconds per level (the segmentation's getStageSeconds()).
@@ -38,9 +43,11 @@
 
 #include <segmat/common/error.h>
 #include <segmat/evaluation/psb_metrics.h>
+#include <segmat/geometry/mesh_distance.h>
 #include <segmat/io/atomic_file.h>
 #include <segmat/io/off.h>
 #include <segmat/io/seg.h>
+#include <segmat/medial/cloud_preprocessing.h>
 #include <segmat/segmentation/mesh_segmentation.h>
 
 #include <pcl/console/print.h>
@@ -64,6 +71,8 @@ struct Result
   int parts = 0;
   double seconds = 0.0;
   int draw = 0;                ///< noise draw × jitter draws + jitter draw
+  double surface_error = 0.0;  ///< clouds, --surface-error: median distance, % of the diagonal
+  double remaining_sigma = 0.0; ///< clouds, --surface-error: remaining σ̂, % of the diagonal
   segmat::StageTimings stages; ///< the segmentation's own stage times
 };
 
@@ -113,13 +122,53 @@ segmentMesh(const segmat::TriangleMesh& clean, double level, std::uint32_t seed,
   return r;
 }
 
+/// What --surface-error and --true-surface compare against: the clean mesh.
+struct TrueSurface
+{
+  const segmat::MeshDistance* distance = nullptr; ///< null: neither option
+  double diagonal = 1.0;
+  bool project = false; ///< --true-surface
+  bool measure = false; ///< --surface-error
+};
+
+/// Median distance of the working points that CloudPreprocessing makes of \a cloud (normals
+/// estimated, as in the segmentation) to the true surface, in % of the diagonal; its remaining
+/// σ̂ in the same unit goes to \a remaining_sigma.
+double
+workingSurfaceError(const segmat::test::SampledCloud& cloud, const TrueSurface& truth,
+                    double& remaining_sigma)
+{
+  segmat::CloudPreprocessing preprocessing;
+  preprocessing.setInputCloud(cloud.toPointNormal());
+  preprocessing.setUseInputNormalsFlag(false);
+  preprocessing.setNumberOfThreads(1);
+  pcl::PointCloud<pcl::PointNormal> working;
+  if (!preprocessing.compute(working))
+    throw segmat::Error("cannot preprocess a noisy cloud");
+  remaining_sigma = 100.0 * preprocessing.getRemainingNoise() / truth.diagonal;
+  std::vector<double> distances;
+  for (const auto& p : working)
+    distances.push_back(truth.distance->distance(p.getVector3fMap().cast<double>()));
+  return 100.0 * segmat::bench::median(distances) / truth.diagonal;
+}
+
 Result
 segmentCloud(const segmat::test::SampledCloud& clean, double level, std::uint32_t seed,
-             const std::vector<std::vector<int>>& humans, const std::string& write_path)
+             const std::vector<std::vector<int>>& humans, const std::string& write_path,
+             const TrueSurface& truth)
 {
   segmat::test::SampledCloud noisy = clean;
   if (level > 0.0)
     segmat::test::addGaussianNoise(noisy, level / 100.0, seed);
+  double surface_error = 0.0, remaining_sigma = 0.0;
+  if (truth.measure)
+    surface_error = workingSurfaceError(noisy, truth, remaining_sigma);
+  if (truth.project)
+    for (Eigen::Vector3f& p : noisy.points) {
+      Eigen::Vector3d nearest;
+      truth.distance->distance(p.cast<double>(), &nearest);
+      p = nearest.cast<float>();
+    }
   if (!write_path.empty()) {
     std::filesystem::create_directories(std::filesystem::path(write_path).parent_path());
     segmat::io::writeFileAtomically(write_path, [&](std::ostream& out) {
@@ -135,6 +184,8 @@ segmentCloud(const segmat::test::SampledCloud& clean, double level, std::uint32_
   r.seconds = run.seconds;
   r.stages = run.stages;
   r.parts = run.parts;
+  r.surface_error = surface_error;
+  r.remaining_sigma = remaining_sigma;
   const std::vector<int>& labels = run.labels;
   for (const auto& human : humans)
     r.ri += segmat::test::randIndexError(labels, clean.pointLabels(human)) / double(humans.size());
@@ -190,6 +241,7 @@ main(int argc, char** argv)
   std::uint32_t seed_offset = 0;
   int draws = 1, noise_draws = 1;
   bool principal_axes = true;
+  TrueSurface truth;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const bool has_value = i + 1 < argc;
@@ -208,6 +260,10 @@ main(int argc, char** argv)
       seed_offset = std::uint32_t(std::stoul(argv[++i]));
     else if (arg == "--input-axes")
       principal_axes = false;
+    else if (arg == "--true-surface")
+      truth.project = true;
+    else if (arg == "--surface-error")
+      truth.measure = true;
     else if (arg == "--draws" && has_value)
       draws = std::max(1, std::atoi(argv[++i]));
     else if (arg == "--noise-draws" && has_value)
@@ -219,14 +275,17 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_noise [PSB_DIR] [--kind mesh|cloud] [--levels 0,0.2,0.5,1] "
                    "[--models 1,21,...|--half tune|check] [--points N] [--seed-offset K] "
-                   "[--draws K] [--noise-draws K] [--input-axes] [--write DIR]\n";
+                   "[--draws K] [--noise-draws K] [--input-axes] [--write DIR] "
+                   "[--surface-error] [--true-surface]\n";
       return arg == "-h" || arg == "--help" ? 0 : 2;
     }
   }
   if ((kind != "mesh" && kind != "cloud") || (!half.empty() && half != "tune" && half != "check") ||
-      (draws > 1 && kind != "mesh") || (noise_draws > 1 && !write_dir.empty())) {
+      (draws > 1 && kind != "mesh") || (noise_draws > 1 && !write_dir.empty()) ||
+      ((truth.project || truth.measure) && kind != "cloud")) {
     std::cerr << "bench_noise: --kind is mesh or cloud, --half is tune or check, --draws is for "
-                 "meshes, --write takes one noise draw\n";
+                 "meshes, --write takes one noise draw, --surface-error and --true-surface are "
+                 "for clouds\n";
     return 2;
   }
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
@@ -261,6 +320,17 @@ main(int argc, char** argv)
       if (humans.empty())
         continue;
       ++scored;
+      std::unique_ptr<segmat::MeshDistance> distance;
+      if (truth.project || truth.measure) {
+        distance = std::make_unique<segmat::MeshDistance>(mesh);
+        Eigen::Vector3d lo = mesh.vertices.front(), hi = lo;
+        for (const Eigen::Vector3d& v : mesh.vertices) {
+          lo = lo.cwiseMin(v);
+          hi = hi.cwiseMax(v);
+        }
+        truth.distance = distance.get();
+        truth.diagonal = (hi - lo).norm();
+      }
       const segmat::test::SampledCloud cloud = kind == "cloud"
                                                    ? segmat::test::sampleMesh(mesh, points, 1)
                                                    : segmat::test::SampledCloud();
@@ -278,9 +348,10 @@ main(int argc, char** argv)
                          (kind == "mesh" ? "/off/" + stem + ".off" : "/xyz/" + stem + ".xyz");
           }
           for (int d = 0; d < draws; ++d) {
-            Result r = kind == "mesh" ? segmentMesh(mesh, levels[l], seed, std::uint32_t(d),
-                                                    principal_axes, humans, write_path)
-                                      : segmentCloud(cloud, levels[l], seed, humans, write_path);
+            Result r = kind == "mesh"
+                           ? segmentMesh(mesh, levels[l], seed, std::uint32_t(d), principal_axes,
+                                         humans, write_path)
+                           : segmentCloud(cloud, levels[l], seed, humans, write_path, truth);
             r.draw = k * draws + d;
             results[l].push_back(r);
             std::fprintf(stderr, "%s %d sigma %g%% draw %d: 1-RI %.4f, %d parts, %.2f s\n",
@@ -308,9 +379,16 @@ main(int argc, char** argv)
     std::printf("; σ = 0 takes one noise seed. Figures are means over the runs; the last column "
                 "is each run's 1 - RI.\n\n");
   }
-  std::printf("| noise sigma (%% of diagonal) | 1 - RI | parts per shape | median s | max s |%s\n"
-              "|---|---|---|---|---|%s\n",
-              runs > 1 ? " 1 - RI per run |" : "", runs > 1 ? "---|" : "");
+  if (truth.project)
+    std::printf("Every noisy point was moved onto the nearest point of the clean mesh before "
+                "segmenting (--true-surface).\n\n");
+  std::printf("| noise sigma (%% of diagonal) | 1 - RI | parts per shape | median s | max s |%s%s\n"
+              "|---|---|---|---|---|%s%s\n",
+              truth.measure ? " smoothed points to true surface, median (% of diagonal) | "
+                              "remaining σ̂ (% of diagonal) |"
+                            : "",
+              runs > 1 ? " 1 - RI per run |" : "", truth.measure ? "---|---|" : "",
+              runs > 1 ? "---|" : "");
   for (std::size_t l = 0; l < levels.size(); ++l) {
     double ri = 0.0, parts = 0.0;
     std::vector<double> seconds;
@@ -321,6 +399,14 @@ main(int argc, char** argv)
     }
     std::printf("| %g | %.4f | %.1f | %.2f | %.2f |", levels[l], ri, parts,
                 segmat::bench::median(seconds), *std::max_element(seconds.begin(), seconds.end()));
+    if (truth.measure) {
+      double error = 0.0, remaining = 0.0; // means over the runs
+      for (const Result& r : results[l]) {
+        error += r.surface_error / double(results[l].size());
+        remaining += r.remaining_sigma / double(results[l].size());
+      }
+      std::printf(" %.3f | %.4f |", error, remaining);
+    }
     if (runs > 1) {
       const int level_runs = levels[l] > 0.0 ? runs : draws;
       std::vector<double> per_draw(level_runs, 0.0);

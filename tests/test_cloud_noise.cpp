@@ -111,7 +111,7 @@ INSTANTIATE_TEST_SUITE_P(
                       NoisyCloudCase{101, 0.5, 0.45, 9, 15228794444371619633ull},
                       NoisyCloudCase{346, 0.0, 0.05, 3, 2476743862870366952ull},
                       NoisyCloudCase{346, 0.5, 0.36, 2, 2687951211770937761ull},
-                      NoisyCloudCase{41, 0.5, 0.15, 9, 18382750751620767202ull},
+                      NoisyCloudCase{41, 0.5, 0.15, 8, 9745792933633437430ull},
                       NoisyCloudCase{321, 0.5, 0.45, 3, 8055613398494495648ull}),
     [](const ::testing::TestParamInfo<NoisyCloudCase>& info) {
       return "psb" + std::to_string(info.param.model) + "_sigma_" +

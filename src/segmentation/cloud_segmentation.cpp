@@ -145,14 +145,16 @@ segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
   grower.setInputGraph(graph);
   grower.setStructureTags(tags);
   SegmentVisibility see;
-  // A medial mesh's balls are taken as they are, widened by six times the noise that smoothing
+  // A medial mesh's balls are taken as they are, widened by ten times the noise that smoothing
   // left (a clean cloud: none): inflated by a tenth of each radius, the union overshoots the
   // surface in concave creases, and parts across a neck or a step see each other; on a noisy
-  // cloud the balls' radii err with the noise, and the union of a thin part has gaps. The
-  // sparse balls of a meso-skeleton need the inflation to bridge their gaps.
+  // cloud the balls' radii err with the smoothed surface, and the union of a thin part has gaps.
+  // The remaining σ̂ measures only the roughness the passes left: the smoothed points lie about
+  // six times as far from the true surface (docs/noise.md, "Limits"). The sparse balls of a
+  // meso-skeleton need the inflation to bridge their gaps.
   if (visibility)
     see = graph->hasPrimitives() ? BallUnionVisibility(graph->centers(), graph->radii(), 1.0,
-                                                       6.0 * grower.getRadiusTolerance())
+                                                       10.0 * grower.getRadiusTolerance())
                                  : BallUnionVisibility(graph->centers(), graph->radii());
   grower.setSegmentVisibility(see);
   std::vector<pcl::PointIndices> grown;
