@@ -28,9 +28,9 @@
  * the noisy meshes as DIR/LEVEL/off/N.off (the input of segmat_mesh or scripts/eval_psb.sh),
  * and the noisy clouds as DIR/LEVEL/xyz/N.xyz (x y z per line, the input of segmat_cloud).
  * Two options for clouds measure what denoising leaves (docs/noise.md, "Limits"):
- * --surface-error adds a column with the median distance of the smoothed working points
- * (CloudPreprocessing, as the segmentation computes them) to the clean mesh, in % of the
- * diagonal; --true-surface moves every noisy point onto the nearest point of the clean mesh
+ * --surface-error adds two columns: the median distance of the smoothed working points
+ * (CloudPreprocessing, as the segmentation computes them) to the clean mesh, and their remaining
+ * σ̂, both in % of the diagonal; --true-surface moves every noisy point onto the nearest point of the clean mesh
  * before segmenting, which is what a perfect denoiser would hand on.
  * Prints one row per shape and level on stderr, then a table per level: 1 − RI, parts per
  * shape, median and max seconds per shape (one thread, segmentation from the file's geometry),
@@ -58,6 +58,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <string>
