@@ -117,6 +117,35 @@ TEST(AlphaExpansion, ChainCutsAtItsWeakestEdge)
   EXPECT_DOUBLE_EQ(solver.getEnergy(), 9.0);
 }
 
+TEST(AlphaExpansion, StartsFromAGivenLabelling)
+{
+  // The chain above, started from all 1: the moves to 0 and to 2 each take one end, and the
+  // result is the optimum 0 0 0 2 2 2 again. Started from the optimum, one cycle of three moves
+  // finds nothing to improve and returns it unchanged.
+  Eigen::MatrixXd unary(6, 3);
+  unary << 0, 100, 100, 2, 1, 2, 2, 1, 2, 2, 1, 2, 2, 1, 2, 100, 100, 0;
+  const std::vector<PottsEdge> edges{{0, 1, 5}, {1, 2, 5}, {2, 3, 1}, {3, 4, 5}, {4, 5, 5}};
+  AlphaExpansion solver;
+  solver.setUnaryCosts(unary);
+  solver.setEdges(edges);
+  std::vector<int> labels;
+  ASSERT_TRUE(solver.compute(std::vector<int>(6, 1), labels));
+  EXPECT_EQ(labels, (std::vector<int>{0, 0, 0, 2, 2, 2}));
+  EXPECT_DOUBLE_EQ(solver.getEnergy(), 9.0);
+  ASSERT_TRUE(solver.compute({0, 0, 0, 2, 2, 2}, labels));
+  EXPECT_EQ(labels, (std::vector<int>{0, 0, 0, 2, 2, 2}));
+  EXPECT_EQ(solver.getCycles(), 1);
+  EXPECT_EQ(solver.getMoves(), 3);
+
+  pcl::console::VERBOSITY_LEVEL old = pcl::console::getVerbosityLevel();
+  pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
+  EXPECT_FALSE(solver.compute({0, 0, 0}, labels)); // wrong size
+  EXPECT_TRUE(labels.empty());
+  EXPECT_FALSE(solver.compute({0, 0, 0, 3, 2, 2}, labels)); // label out of range
+  EXPECT_FALSE(solver.compute({0, 0, 0, -1, 2, 2}, labels));
+  pcl::console::setVerbosityLevel(old);
+}
+
 TEST(AlphaExpansion, StrongSmoothingGivesOneLabel)
 {
   // Sum of unaries per label: 9, 8, 10 → with edges too strong to cut, everything takes label 1.

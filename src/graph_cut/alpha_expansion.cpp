@@ -83,6 +83,12 @@ computePottsEnergy(const Eigen::MatrixXd& unary, const std::vector<PottsEdge>& e
 bool
 AlphaExpansion::compute(std::vector<int>& labels)
 {
+  return compute({}, labels);
+}
+
+bool
+AlphaExpansion::compute(std::vector<int> initial, std::vector<int>& labels)
+{
   labels.clear();
   energy_ = 0.0;
   cycles_ = 0;
@@ -94,14 +100,17 @@ AlphaExpansion::compute(std::vector<int>& labels)
   if (n == 0)
     return true;
 
-  // Start from the per-node best label: with weak smoothing this is already near the optimum.
-  labels.resize(n);
-  for (int i = 0; i < n; ++i) {
-    Eigen::Index best = 0;
-    unary_.row(i).minCoeff(&best); // first minimum: ties go to the smaller label
-    labels[i] = static_cast<int>(best);
+  if (!initial.empty() && initial.size() != static_cast<std::size_t>(n)) {
+    PCL_ERROR("[segmat::AlphaExpansion::compute] %zu initial labels for %d nodes.\n",
+              initial.size(), n);
+    return false;
   }
-  energy_ = energy(labels);
+  for (int l : initial)
+    if (l < 0 || l >= num_labels) {
+      PCL_ERROR("[segmat::AlphaExpansion::compute] initial label %d out of range [0, %d).\n", l,
+                num_labels);
+      return false;
+    }
 
   // Only edges that can cost something enter the network.
   std::vector<std::pair<int, int>> pairs;
@@ -111,8 +120,21 @@ AlphaExpansion::compute(std::vector<int>& labels)
       pairs.emplace_back(e.a, e.b);
       weights.push_back(e.weight);
     }
+  if (!initial.empty() && num_labels > 1 && !pairs.empty())
+    labels.swap(initial);
+  else {
+    // The per-node best label: with weak smoothing this is already near the optimum, and
+    // without edges it is the exact optimum.
+    labels.resize(n);
+    for (int i = 0; i < n; ++i) {
+      Eigen::Index best = 0;
+      unary_.row(i).minCoeff(&best); // first minimum: ties go to the smaller label
+      labels[i] = static_cast<int>(best);
+    }
+  }
+  energy_ = energy(labels);
   if (num_labels == 1 || pairs.empty())
-    return true; // argmin of the unary terms is the exact optimum
+    return true;
 
   BkMaxFlow network(n, pairs);
   std::vector<double> alpha_minus_keep(n);

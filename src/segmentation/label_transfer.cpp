@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <utility>
 
 namespace segmat {
 namespace {
@@ -285,10 +286,21 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
     if (!dropped || next.empty())
       break;
     Eigen::MatrixXd reduced(unary.rows(), static_cast<Eigen::Index>(next.size()));
-    for (std::size_t r = 0; r < next.size(); ++r)
+    std::vector<int> column(kept.size(), -1); // current label → its column in reduced
+    for (std::size_t r = 0; r < next.size(); ++r) {
       reduced.col(static_cast<Eigen::Index>(r)) = unary.col(kept[next[r]]);
+      column[next[r]] = static_cast<int>(r);
+    }
+    // The cut so far is the start: only the faces or points of the dropped parts need new labels.
+    std::vector<int> start(labels.size());
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      Eigen::Index best = 0;
+      if (column[labels[i]] < 0)
+        reduced.row(static_cast<Eigen::Index>(i)).minCoeff(&best);
+      start[i] = column[labels[i]] < 0 ? static_cast<int>(best) : column[labels[i]];
+    }
     solver_.setUnaryCosts(reduced);
-    if (!solver_.compute(labels)) {
+    if (!solver_.compute(std::move(start), labels)) {
       labels.clear();
       return false;
     }
