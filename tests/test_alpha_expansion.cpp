@@ -179,6 +179,9 @@ TEST(AlphaExpansion, NoEdgesGivesArgminOfUnary)
   solver.setEdges({{0, 1, 0.0}, {2, 2, 7.0}});
   ASSERT_TRUE(solver.compute(labels));
   EXPECT_EQ(labels, (std::vector<int>{1, 0, 3}));
+  // A given start changes nothing either: the argmin is the exact optimum.
+  ASSERT_TRUE(solver.compute({0, 2, 2}, labels));
+  EXPECT_EQ(labels, (std::vector<int>{1, 0, 3}));
 }
 
 TEST(AlphaExpansion, SingleLabelAndEmptyProblem)

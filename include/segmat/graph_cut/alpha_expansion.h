@@ -41,7 +41,8 @@ computePottsEnergy(const Eigen::MatrixXd& unary, const std::vector<PottsEdge>& e
  * The class knows nothing of meshes: it takes nodes, labels, unary costs and weighted edges.
  * Differences from the reference (GCO v3, `expansion(2)`):
  *  - the initial labelling is the per-node argmin of the unary costs (ties: the smaller label),
- *    not "all 0" — it starts closer to the optimum, so fewer moves are needed — or one given;
+ *    not "all 0" — it starts closer to the optimum, so fewer moves are needed — unless the
+ *    caller gives one;
  *  - cycles over the labels 0..L−1 (fixed order, deterministic) repeat until a whole cycle
  *    lowers the energy no further, or until getMaxCycles() cycles have run;
  *  - a move is kept only when it lowers the energy strictly, which guarantees termination.
@@ -100,7 +101,8 @@ public:
   compute(std::vector<int>& labels);
 
   /** \brief Minimise the energy from \a initial instead of the unary argmin: a labelling close
-   * to the optimum (the solution of a similar problem) needs fewer moves.
+   * to the optimum (the solution of a similar problem) needs fewer moves. Without edges, or
+   * with one label, the unary argmin is the exact optimum and is returned whatever the start.
    * \param[in] initial one label in [0, L) per node; empty starts from the unary argmin
    * \param[out] labels as compute(labels); also false when \a initial has the wrong size or a
    *             label out of range
