@@ -30,8 +30,8 @@
  * Two options for clouds measure what denoising leaves (docs/noise.md, "Limits"):
  * --surface-error adds two columns: the median distance of the smoothed working points
  * (CloudPreprocessing, as the segmentation computes them) to the clean mesh, and their remaining
- * σ̂, both in % of the diagonal; --true-surface moves every noisy point onto the nearest point of the clean mesh
- * before segmenting, which is what a perfect denoiser would hand on.
+ * σ̂, both in % of the diagonal; --true-surface moves every noisy point onto the nearest point
+ * of the clean mesh before segmenting, which is what a perfect denoiser would hand on.
  * Prints one row per shape and level on stderr, then a table per level: 1 − RI, parts per
  * shape, median and max seconds per shape (one thread, segmentation from the file's geometry),
  * and a table of each stage's median seconds per level (the segmentation's getStageSeconds()).
@@ -324,13 +324,8 @@ main(int argc, char** argv)
       std::unique_ptr<segmat::MeshDistance> distance;
       if (truth.project || truth.measure) {
         distance = std::make_unique<segmat::MeshDistance>(mesh);
-        Eigen::Vector3d lo = mesh.vertices.front(), hi = lo;
-        for (const Eigen::Vector3d& v : mesh.vertices) {
-          lo = lo.cwiseMin(v);
-          hi = hi.cwiseMax(v);
-        }
         truth.distance = distance.get();
-        truth.diagonal = (hi - lo).norm();
+        truth.diagonal = mesh.boundingBoxDiagonal();
       }
       const segmat::test::SampledCloud cloud = kind == "cloud"
                                                    ? segmat::test::sampleMesh(mesh, points, 1)

@@ -294,10 +294,12 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
     // The cut so far is the start: only the faces or points of the dropped parts need new labels.
     std::vector<int> start(labels.size());
     for (std::size_t i = 0; i < labels.size(); ++i) {
+      start[i] = column[labels[i]];
       Eigen::Index best = 0;
-      if (column[labels[i]] < 0)
+      if (start[i] < 0) {
         reduced.row(static_cast<Eigen::Index>(i)).minCoeff(&best);
-      start[i] = column[labels[i]] < 0 ? static_cast<int>(best) : column[labels[i]];
+        start[i] = static_cast<int>(best);
+      }
     }
     solver_.setUnaryCosts(reduced);
     if (!solver_.compute(std::move(start), labels)) {
