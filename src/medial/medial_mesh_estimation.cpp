@@ -6,6 +6,8 @@
 #include <segmat/geometry/winding_number.h>
 #include <segmat/medial/qmat_simplification.h>
 
+#include "covered_hole_filling.h"
+
 #include <pcl/console/print.h>
 
 #include <chrono>
@@ -51,6 +53,7 @@ MedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
     return false;
   }
 
+  statistics_.filled_holes = std::size_t(detail::fillCoveredHoles(*initial_));
   QmatSimplification qmat;
   qmat.setInputMat(initial_);
   if (keep_centres_inside_)

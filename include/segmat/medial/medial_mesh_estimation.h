@@ -17,6 +17,8 @@ namespace segmat {
 struct MedialMeshEstimationStatistics
 {
   std::size_t initial_spheres = 0;    ///< spheres of the initial Voronoi medial mesh
+  /// holes of the initial MAT's sheets closed before Q-MAT because their rim balls cover them
+  std::size_t filled_holes = 0;
   std::size_t base_spheres = 0;       ///< spheres of the base MAT
   std::size_t structured_spheres = 0; ///< spheres of the structured MAT
   double seconds_initial = 0.0;       ///< VoronoiMat (sampling, Delaunay, inside test, assembly)
@@ -29,7 +31,10 @@ struct MedialMeshEstimationStatistics
  * "SEG-MAT: 3D Shape Segmentation Using Medial Axis Transform", TVCG 2022, §3): the initial
  * Voronoi MAT (VoronoiMat), simplified by Q-MAT (QmatSimplification, Li et al. 2015) to the base
  * MAT and, in the same collapse sequence, to the structured MAT. Q-MAT's normalisation is the
- * surface's bounding-box diagonal, as in the published code.
+ * surface's bounding-box diagonal, as in the published code. Before Q-MAT, every hole of a
+ * medial sheet that the balls on its rim cover is closed: such a hole has no hole of the shape
+ * behind it (noise makes them), and Q-MAT, which keeps the topology, would otherwise turn the
+ * sheet around it into a net of lines (docs/noise.md).
  *
  * \code
  * segmat::MedialMeshEstimation estimation;
@@ -126,7 +131,7 @@ public:
   bool
   compute(MedialMesh& base, MedialMesh& structured);
 
-  /** \brief The initial Voronoi medial mesh of the last compute(). */
+  /** \brief The initial Voronoi medial mesh of the last compute(), its covered holes closed. */
   const MedialMesh& getInitialMat() const { return *initial_; }
 
   /** \brief Counts and timings of the last compute(). */
