@@ -12,18 +12,18 @@ namespace segmat {
 namespace detail {
 namespace {
 
-/// Follows the boundary edges from \a start; the loop's vertices in order, or empty when the
-/// walk meets a vertex without exactly two boundary edges, runs longer than \a max_loop or does
-/// not come back.
-std::vector<int>
+/// Follows the boundary edges from \a start and puts the vertices it passes into \a walk.
+/// True when the walk comes back to \a start through at least three vertices, each with exactly
+/// two boundary edges, within \a max_loop edges: \a walk is then the loop in order.
+bool
 traceLoop(const MedialMesh& mat, const std::vector<std::vector<int>>& boundary, int start,
-          int max_loop)
+          int max_loop, std::vector<int>& walk)
 {
-  std::vector<int> loop{start};
+  walk.assign(1, start);
   int previous = -1, current = start;
-  while (int(loop.size()) <= max_loop) {
+  while (int(walk.size()) <= max_loop) {
     if (boundary[current].size() != 2)
-      return {};
+      return false;
     int next = -1;
     for (int e : boundary[current]) {
       const Eigen::Vector2i& ab = mat.edges()[e];
@@ -34,14 +34,14 @@ traceLoop(const MedialMesh& mat, const std::vector<std::vector<int>>& boundary, 
       }
     }
     if (next < 0)
-      return {};
+      return false;
     if (next == start)
-      return loop.size() >= 3 ? loop : std::vector<int>{};
-    loop.push_back(next);
+      return walk.size() >= 3;
+    walk.push_back(next);
     previous = current;
     current = next;
   }
-  return {};
+  return false;
 }
 
 bool
@@ -113,16 +113,17 @@ fillCoveredHoles(MedialMesh& mat, int max_loop)
   std::vector<Eigen::Vector2i> edges = mat.edges();
   std::vector<Eigen::Vector3i> triangles = mat.triangles();
   int filled = 0;
-  // Loops in the order of their smallest vertex: the result does not depend on anything else.
+  // Each walk starts at the smallest vertex not walked yet, so a loop starts at its smallest
+  // vertex whatever the order of anything else. A vertex walked once, in a loop or not, would
+  // only give the same walk again.
+  std::vector<int> loop;
   for (int start = 0; start < nv; ++start) {
     if (used[start] || boundary[start].size() != 2)
       continue;
-    std::vector<int> loop = traceLoop(mat, boundary, start, max_loop);
-    if (loop.empty() || *std::min_element(loop.begin(), loop.end()) != start)
-      continue;
+    const bool closed = traceLoop(mat, boundary, start, max_loop, loop);
     for (int v : loop)
       used[v] = 1;
-    if (!trianglesOutside(mat, loop))
+    if (!closed || !trianglesOutside(mat, loop))
       continue;
     // The first apex whose fan adds no existing edge and stays in the balls.
     bool found = false;
