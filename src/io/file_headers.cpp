@@ -256,7 +256,11 @@ checkPlyHeader(const std::string& path)
         header.fail("malformed property line " + quoted(line));
       // ASCII: at least one digit and one separator per value.
       elements.back().least_bytes += ascii ? 2 : bytes;
-    } else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty()) {
+    } else if (keyword == "obj_info") {
+      // PCL's reader aborts (assert) on an 'obj_info' line that does not start with it.
+      if (line.substr(0, 8) != "obj_info")
+        header.fail("blank before 'obj_info' in " + quoted(line));
+    } else if (keyword != "comment" && !keyword.empty()) {
       header.fail("unexpected " + quoted(keyword) + " in the PLY header");
     }
   }
