@@ -5,7 +5,6 @@
 #include "covered_hole_filling.h"
 
 #include <algorithm>
-#include <utility>
 #include <vector>
 
 namespace segmat {
