@@ -34,7 +34,10 @@
  * of the clean mesh before segmenting, which is what a perfect denoiser would hand on.
  * Prints one row per shape and level on stderr, then a table per level: 1 − RI, parts per
  * shape, median and max seconds per shape (one thread, segmentation from the file's geometry),
- * and a table of each stage's median seconds per level (the segmentation's getStageSeconds()).
+ * with several runs per shape the 1 − RI between two runs of the same shape (the mean over its
+ * pairs of runs, then over the shapes: how much its parts change from one noise or jitter draw
+ * to the next, whatever the humans say), and a table of each stage's median seconds per level
+ * (the segmentation's getStageSeconds()).
  */
 // The test sampler is compiled in (bench programs link only the library).
 #include "../tests/util/cloud_sampler.cpp"
@@ -75,6 +78,7 @@ struct Result
   double surface_error = 0.0;  ///< clouds, --surface-error: median distance, % of the diagonal
   double remaining_sigma = 0.0; ///< clouds, --surface-error: remaining σ̂, % of the diagonal
   segmat::StageTimings stages; ///< the segmentation's own stage times
+  std::vector<int> labels;     ///< per face (meshes) or per sampled point (clouds)
 };
 
 std::vector<double>
@@ -113,6 +117,7 @@ segmentMesh(const segmat::TriangleMesh& clean, double level, std::uint32_t seed,
   if (!ok)
     labels.assign(clean.numFaces(), 0);
   r.parts = int(std::set<int>(labels.begin(), labels.end()).size());
+  r.labels = labels;
   const segmat::PsbEvaluator evaluator(clean);
   for (const auto& human : humans) {
     segmat::PsbScores scores;
@@ -188,6 +193,7 @@ segmentCloud(const segmat::test::SampledCloud& clean, double level, std::uint32_
   r.surface_error = surface_error;
   r.remaining_sigma = remaining_sigma;
   const std::vector<int>& labels = run.labels;
+  r.labels = labels;
   for (const auto& human : humans)
     r.ri += segmat::test::randIndexError(labels, clean.pointLabels(human)) / double(humans.size());
   return r;
@@ -305,6 +311,9 @@ main(int argc, char** argv)
   }
 
   std::vector<std::vector<Result>> results(levels.size());
+  // Per level, each shape's mean 1 − RI between two of its runs: how much the parts change from
+  // one scan (noise draw, jitter draw) of the same shape to the next.
+  std::vector<std::vector<double>> between(levels.size());
   std::size_t scored = 0; // shapes with human segmentations
   try {
     for (int id : models) {
@@ -331,6 +340,7 @@ main(int argc, char** argv)
                                                    ? segmat::test::sampleMesh(mesh, points, 1)
                                                    : segmat::test::SampledCloud();
       for (std::size_t l = 0; l < levels.size(); ++l) {
+        const std::size_t first_run = results[l].size();
         // The clean level has no noise to draw again.
         for (int k = 0; k < (levels[l] > 0.0 ? noise_draws : 1); ++k) {
           const std::uint32_t seed = std::uint32_t(id) * 1000u +
@@ -354,6 +364,16 @@ main(int argc, char** argv)
                          kind.c_str(), id, levels[l], r.draw, r.ri, r.parts, r.seconds);
           }
         }
+        std::vector<Result>& runs = results[l];
+        double sum = 0.0;
+        int pairs = 0;
+        for (std::size_t a = first_run; a < runs.size(); ++a)
+          for (std::size_t b = a + 1; b < runs.size(); ++b, ++pairs)
+            sum += segmat::test::randIndexError(runs[a].labels, runs[b].labels);
+        if (pairs > 0)
+          between[l].push_back(sum / pairs);
+        for (std::size_t a = first_run; a < runs.size(); ++a)
+          std::vector<int>().swap(runs[a].labels); // only the pairs of one shape are compared
       }
     }
   }
@@ -378,13 +398,14 @@ main(int argc, char** argv)
   if (truth.project)
     std::printf("Every noisy point was moved onto the nearest point of the clean mesh before "
                 "segmenting (--true-surface).\n\n");
-  std::printf("| noise sigma (%% of diagonal) | 1 - RI | parts per shape | median s | max s |%s%s\n"
-              "|---|---|---|---|---|%s%s\n",
+  std::printf("| noise sigma (%% of diagonal) | 1 - RI | parts per shape | median s | max s |%s%s%s\n"
+              "|---|---|---|---|---|%s%s%s\n",
+              runs > 1 ? " 1 - RI between runs |" : "",
               truth.measure ? " smoothed points to true surface, median (% of diagonal) | "
                               "remaining σ̂ (% of diagonal) |"
                             : "",
-              runs > 1 ? " 1 - RI per run |" : "", truth.measure ? "---|---|" : "",
-              runs > 1 ? "---|" : "");
+              runs > 1 ? " 1 - RI per run |" : "", runs > 1 ? "---|" : "",
+              truth.measure ? "---|---|" : "", runs > 1 ? "---|" : "");
   for (std::size_t l = 0; l < levels.size(); ++l) {
     double ri = 0.0, parts = 0.0;
     std::vector<double> seconds;
@@ -395,6 +416,16 @@ main(int argc, char** argv)
     }
     std::printf("| %g | %.4f | %.1f | %.2f | %.2f |", levels[l], ri, parts,
                 segmat::bench::median(seconds), *std::max_element(seconds.begin(), seconds.end()));
+    if (runs > 1) {
+      if (between[l].empty())
+        std::printf(" – |"); // one run per shape at this level
+      else {
+        double mean = 0.0;
+        for (double d : between[l])
+          mean += d / double(between[l].size());
+        std::printf(" %.4f |", mean);
+      }
+    }
     if (truth.measure) {
       double error = 0.0, remaining = 0.0; // means over the runs
       for (const Result& r : results[l]) {
