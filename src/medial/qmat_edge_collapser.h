@@ -168,7 +168,9 @@ private:
   std::vector<int> scratch_;
   // killedCyclesAreBoundaries() buffers, kept to avoid allocations
   std::vector<int> scratch_bad_, scratch_patch_, scratch_faces_;
-  std::vector<std::uint64_t> scratch_keys_;
+  std::vector<std::uint64_t> scratch_keys_;     // hash table of edge keys
+  std::vector<std::uint32_t> scratch_numbers_;  // their local edge numbers
+  std::vector<std::uint32_t> scratch_bits_;     // listed edge → local edge number
   Gf2Span scratch_span_;
   /// Buffers of dead vertices' lists: each collapse frees four lists and needs two, and
   /// malloc/free of them was a visible share of the collapse loop.

@@ -164,39 +164,59 @@ EdgeCollapser::cyclesBoundWithin(int a, int b, int rings)
     }
   if (faces.size() > kMaxPatchFaces)
     return false; // too big to decide cheaply: stay on the safe side
-  std::vector<std::uint64_t>& keys = scratch_keys_;
-  keys.clear();
-  auto key = [](int p, int q) {
-    return (static_cast<std::uint64_t>(std::min(p, q)) << 32) |
-           static_cast<std::uint32_t>(std::max(p, q));
+  // Local edge numbers, in order of first appearance (any one-to-one numbering gives the same
+  // span), from an open-addressing table: three per face, two per bad x, then ab.
+  const std::size_t listed = 3 * faces.size() + 2 * bad.size() + 1;
+  int shift = 64;
+  std::size_t size = 1;
+  while (size < 2 * listed) {
+    size <<= 1;
+    --shift;
+  }
+  constexpr std::uint64_t kEmpty = ~std::uint64_t(0); // never a key: vertex ids are below 2^31
+  std::vector<std::uint64_t>& table = scratch_keys_;
+  std::vector<std::uint32_t>& number = scratch_numbers_;
+  table.assign(size, kEmpty);
+  number.resize(size);
+  std::vector<std::uint32_t>& bit = scratch_bits_;
+  bit.clear();
+  std::uint32_t edges = 0;
+  auto list = [&](int p, int q) {
+    const std::uint64_t key = (static_cast<std::uint64_t>(std::min(p, q)) << 32) |
+                              static_cast<std::uint32_t>(std::max(p, q));
+    std::size_t h = shift < 64 ? static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift)
+                               : 0;
+    while (table[h] != kEmpty && table[h] != key)
+      h = (h + 1) & (size - 1);
+    if (table[h] == kEmpty) {
+      table[h] = key;
+      number[h] = edges++;
+    }
+    bit.push_back(number[h]);
   };
   for (int f : faces)
     for (int k = 0; k < 3; ++k)
-      keys.push_back(key(f_v_[f][k], f_v_[f][(k + 1) % 3]));
+      list(f_v_[f][k], f_v_[f][(k + 1) % 3]);
   for (int x : bad) {
-    keys.push_back(key(a, x));
-    keys.push_back(key(b, x));
+    list(a, x);
+    list(b, x);
   }
-  keys.push_back(key(a, b));
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  auto bitOf = [&](int p, int q) {
-    return static_cast<std::size_t>(std::lower_bound(keys.begin(), keys.end(), key(p, q)) -
-                                    keys.begin());
-  };
+  list(a, b);
   Gf2Span& span = scratch_span_;
-  span.reset(keys.size());
-  for (int f : faces) {
+  span.reset(edges);
+  std::size_t slot = 0;
+  for (std::size_t i = 0; i < faces.size(); ++i, slot += 3) {
     std::uint64_t* v = span.scratch();
     for (int k = 0; k < 3; ++k)
-      Gf2Span::flip(v, bitOf(f_v_[f][k], f_v_[f][(k + 1) % 3]));
+      Gf2Span::flip(v, bit[slot + k]);
     span.insertScratch();
   }
-  for (int x : bad) {
+  const std::uint32_t ab = bit.back();
+  for (std::size_t i = 0; i < bad.size(); ++i, slot += 2) {
     std::uint64_t* z = span.scratch();
-    Gf2Span::flip(z, bitOf(a, b));
-    Gf2Span::flip(z, bitOf(b, x));
-    Gf2Span::flip(z, bitOf(x, a));
+    Gf2Span::flip(z, ab);
+    Gf2Span::flip(z, bit[slot + 1]); // b x
+    Gf2Span::flip(z, bit[slot]);     // x a
     if (!span.scratchInSpan())
       return false; // not a boundary in the patch: may be a tunnel or hole
   }
