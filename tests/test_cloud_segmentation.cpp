@@ -101,6 +101,23 @@ TEST(CloudSegmentation, DumbbellIsThreeParts)
   EXPECT_TRUE(distinct);
 }
 
+// A scanner's noise on a thin part: the tube (radius ρ = 0.3) under Gaussian noise of σ = ρ / 5,
+// about 0.7 % of the diagonal, smoothed with no parameter, still grows as one part between its
+// balls. At σ = ρ / 3 it falls into several (docs/noise.md, "Limits").
+TEST(CloudSegmentation, NoisyDumbbellKeepsItsTubeWhole)
+{
+  SampledCloud shape = dumbbellCloud(20000, 4);
+  const double diagonal = std::sqrt(8.0 * 8.0 + 2.0 * 2.0 + 2.0 * 2.0); // x in ±4, y and z in ±1
+  addGaussianNoise(shape, (0.3 / 5.0) / diagonal, 5);
+  std::size_t parts = 0;
+  const std::vector<int> labels =
+      segmentLabels<pcl::PointXYZ>(shape.toCloud<pcl::PointXYZ>(), &parts, 1);
+  EXPECT_EQ(parts, 3u);
+  bool distinct = false;
+  EXPECT_GE(worstPurity(shape, labels, &distinct), 0.95);
+  EXPECT_TRUE(distinct);
+}
+
 TEST(CloudSegmentation, LTubeIsTwoPartsWithTheMesoSkeleton)
 {
   // The meso-skeleton's corner balls shrink towards the inner crease, so the radius term stops
