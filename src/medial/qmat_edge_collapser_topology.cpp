@@ -165,9 +165,10 @@ EdgeCollapser::cyclesBoundWithin(int a, int b, int rings)
   if (faces.size() > kMaxPatchFaces)
     return false; // too big to decide cheaply: stay on the safe side
   // Local edge numbers, in order of first appearance (any one-to-one numbering gives the same
-  // span), from an open-addressing table: three per face, two per bad x, then ab.
+  // span), from an open-addressing table in reused buffers (std::unordered_map would allocate
+  // a node per edge on every call): three per face, two per bad x, then ab.
   const std::size_t listed = 3 * faces.size() + 2 * bad.size() + 1;
-  int shift = 64;
+  int shift = 64; // the table has 2^(64 − shift) >= 2 slots, so shift < 64
   std::size_t size = 1;
   while (size < 2 * listed) {
     size <<= 1;
@@ -184,8 +185,7 @@ EdgeCollapser::cyclesBoundWithin(int a, int b, int rings)
   auto list = [&](int p, int q) {
     const std::uint64_t key = (static_cast<std::uint64_t>(std::min(p, q)) << 32) |
                               static_cast<std::uint32_t>(std::max(p, q));
-    std::size_t h = shift < 64 ? static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift)
-                               : 0;
+    std::size_t h = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift);
     while (table[h] != kEmpty && table[h] != key)
       h = (h + 1) & (size - 1);
     if (table[h] == kEmpty) {
