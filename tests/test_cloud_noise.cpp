@@ -114,7 +114,7 @@ INSTANTIATE_TEST_SUITE_P(
                       NoisyCloudCase{346, 0.0, 0.05, 3, 2476743862870366952ull},
                       NoisyCloudCase{346, 0.5, 0.36, 2, 2687951211770937761ull},
                       NoisyCloudCase{41, 0.5, 0.15, 8, 9745792933633437430ull},
-                      NoisyCloudCase{321, 0.5, 0.45, 3, 8055613398494495648ull},
+                      NoisyCloudCase{321, 0.5, 0.45, 3, 4241340310826180928ull},
                       NoisyCloudCase{26, 0.3, 0.05, 2, 18237015744876667302ull}),
     [](const ::testing::TestParamInfo<NoisyCloudCase>& info) {
       return "psb" + std::to_string(info.param.model) + "_sigma_" +

@@ -115,6 +115,17 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
     }
   std::vector<Eigen::Vector3d> normals = g.normals, next(nf);
   std::vector<float> range_weight(neighbours.size());
+  // Each pair once, by its lower face (Gaussians are symmetric): its entry, so that the range
+  // weights of all pairs go through one vectorised exp per iteration.
+  std::vector<std::size_t> lower;
+  std::vector<int> lower_face;
+  for (std::size_t f = 0; f < nf; ++f)
+    for (std::size_t a = first[f]; a < first[f + 1]; ++a)
+      if (neighbours[a] > int(f)) {
+        lower.push_back(a);
+        lower_face.push_back(int(f));
+      }
+  Eigen::ArrayXf exponent(static_cast<Eigen::Index>(lower.size()));
   // Per-face turns summed in face order afterwards: a parallel reduction would add them in an
   // order that depends on the thread count, and the stopping test could then differ.
   constexpr double kNone = std::numeric_limits<double>::quiet_NaN(); // a face without normal
@@ -126,18 +137,16 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
     if (it == 0)
       result.range_sigma = range_sigma;
     const double inv_r = 1.0 / (2.0 * range_sigma * range_sigma);
+    // (Pairs with a face without normal get a weight that nothing reads.)
 #pragma omp parallel for schedule(static) num_threads(threads)
-    for (long f = 0; f < long(nf); ++f) {
-      if (normals[f].isZero())
-        continue;
-      for (std::size_t a = first[f]; a < first[f + 1]; ++a) {
-        const int j = neighbours[a];
-        if (j < f || normals[j].isZero())
-          continue;
-        const double dr = (normals[f] - normals[j]).squaredNorm();
-        range_weight[a] = range_weight[mirror[a]] = std::exp(float(-dr * inv_r));
-      }
+    for (long p = 0; p < long(lower.size()); ++p) {
+      const double dr = (normals[lower_face[p]] - normals[neighbours[lower[p]]]).squaredNorm();
+      exponent[p] = float(-dr * inv_r);
     }
+    exponent = exponent.exp();
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (long p = 0; p < long(lower.size()); ++p)
+      range_weight[lower[p]] = range_weight[mirror[lower[p]]] = exponent[p];
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (long f = 0; f < long(nf); ++f) {
       next[f] = normals[f];

@@ -48,7 +48,8 @@ fitAndEvaluate(const std::vector<Basis>& basis, int terms, const std::vector<dou
       }
       const Eigen::LDLT<SmallMatrix> ldlt(gram);
       const auto d = ldlt.vectorD();
-      solved = ldlt.info() == Eigen::Success && d.minCoeff() > 1e-10 * std::max(d.maxCoeff(), 1e-300);
+      solved =
+          ldlt.info() == Eigen::Success && d.minCoeff() > 1e-10 * std::max(d.maxCoeff(), 1e-300);
       if (!solved)
         break;
       coefficients = ldlt.solve(rhs);
@@ -92,11 +93,19 @@ neighbourhoodPca(const std::vector<Eigen::Vector3f>& points, const pcl::Indices&
   for (int j : nn)
     mean += points[j].cast<double>();
   mean /= double(nn.size());
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  // The six distinct entries only: this runs for every sample of every smoothing pass.
+  double xx = 0.0, xy = 0.0, xz = 0.0, yy = 0.0, yz = 0.0, zz = 0.0;
   for (int j : nn) {
     const Eigen::Vector3d d = points[j].cast<double>() - mean;
-    cov += d * d.transpose();
+    xx += d.x() * d.x();
+    xy += d.x() * d.y();
+    xz += d.x() * d.z();
+    yy += d.y() * d.y();
+    yz += d.y() * d.z();
+    zz += d.z() * d.z();
   }
+  Eigen::Matrix3d cov;
+  cov << xx, xy, xz, xy, yy, yz, xz, yz, zz;
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov / double(nn.size()));
 }
 
@@ -227,7 +236,8 @@ fitLocalStructure(const std::vector<Eigen::Vector3f>& points, int self, const pc
     // robust line's weights when it came from robustLineThrough (a corner), the PCA axis else.
     const Eigen::Vector3d t = line.isZero() ? Eigen::Vector3d(frame.col(2)) : line;
     const Eigen::Vector3d e0 = t.unitOrthogonal(), e1 = t.cross(e0);
-    const Eigen::Vector3d origin = line.isZero() ? mean : Eigen::Vector3d(points[self].cast<double>());
+    const Eigen::Vector3d origin =
+        line.isZero() ? mean : Eigen::Vector3d(points[self].cast<double>());
     std::vector<Eigen::Vector2d> across(nn.size());
     for (std::size_t a = 0; a < nn.size(); ++a) {
       const Eigen::Vector3d d = points[nn[a]].cast<double>() - origin;

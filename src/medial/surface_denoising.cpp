@@ -16,6 +16,53 @@ namespace segmat {
 namespace detail {
 namespace {
 
+/// The rows of sidedHeightFit's table: 15 monomials u^a v^b (a + b <= 4), then the height
+/// times each of the basis 1, u, v, u², uv, v².
+constexpr int kMoments = 21;
+
+/// kProduct[i][j]: the monomial of the table that is basis i times basis j.
+constexpr int kProduct[6][6] = {{0, 1, 2, 3, 4, 5},    {1, 3, 4, 6, 7, 8},
+                                {2, 4, 5, 7, 8, 9},    {3, 6, 7, 10, 11, 12},
+                                {4, 7, 8, 11, 12, 13}, {5, 8, 9, 12, 13, 14}};
+
+/// Solves \a normal x = \a rhs by Cholesky; false when \a normal is not positive definite.
+/// Written out for the 6 × 6 systems of the fit, which Eigen's LLT solves through dynamic blocks
+/// at several times the cost.
+bool
+solveCholesky6(const Eigen::Matrix<double, 6, 6>& normal, const Eigen::Matrix<double, 6, 1>& rhs,
+               Eigen::Matrix<double, 6, 1>& x)
+{
+  double l[6][6];
+  for (int j = 0; j < 6; ++j) {
+    double d = normal(j, j);
+    for (int k = 0; k < j; ++k)
+      d -= l[j][k] * l[j][k];
+    if (!(d > 0.0))
+      return false;
+    l[j][j] = std::sqrt(d);
+    for (int i = j + 1; i < 6; ++i) {
+      double e = normal(i, j);
+      for (int k = 0; k < j; ++k)
+        e -= l[i][k] * l[j][k];
+      l[i][j] = e / l[j][j];
+    }
+  }
+  double y[6];
+  for (int i = 0; i < 6; ++i) {
+    double e = rhs[i];
+    for (int k = 0; k < i; ++k)
+      e -= l[i][k] * y[k];
+    y[i] = e / l[i][i];
+  }
+  for (int i = 5; i >= 0; --i) {
+    double e = y[i];
+    for (int k = i + 1; k < 6; ++k)
+      e -= l[k][i] * x[k];
+    x[i] = e / l[i][i];
+  }
+  return true;
+}
+
 /// Where point \a self lies on its own side of the surface: a quadratic height field over the
 /// neighbourhood's PCA tangent plane, fitted with spatial weights exp(−d²/support²) times
 /// Gaussian weights (bandwidth \a band) on each neighbour's residual, refitted a few times
@@ -30,20 +77,35 @@ sidedHeightFit(const std::vector<Eigen::Vector3f>& points, int self, const pcl::
   const Eigen::Vector3d n = pca.eigenvectors().col(0), e1 = pca.eigenvectors().col(1),
                         e2 = pca.eigenvectors().col(2);
   const Eigen::Vector3d origin = points[self].cast<double>();
-  const std::size_t m = nn.size();
-  // Per-thread buffers: the fit runs for every sample in every pass.
-  thread_local std::vector<Eigen::Matrix<double, 6, 1>> basis;
-  thread_local std::vector<double> height, spatial;
-  basis.resize(m);
+  const Eigen::Index m = static_cast<Eigen::Index>(nn.size());
+  // The fit runs for every sample in every pass. Each refit is a weighted sum over the
+  // neighbours of their monomials u^a v^b (a + b <= 4: the normal matrix) and of their heights
+  // times the basis (the right-hand side), so the monomials are tabulated once per sample and
+  // every refit is one vectorised exp and one matrix-vector product. The weights need no more
+  // than float precision; the sums are in double. Per-thread buffers.
+  thread_local Eigen::Matrix<double, kMoments, Eigen::Dynamic> table;
+  thread_local Eigen::ArrayXd height;
+  thread_local Eigen::ArrayXf spatial, exponent;
+  thread_local Eigen::VectorXd fitted, weight;
+  table.resize(kMoments, m);
   height.resize(m);
   spatial.resize(m);
-  for (std::size_t a = 0; a < m; ++a) {
-    const Eigen::Vector3d d = points[nn[a]].cast<double>() - origin;
+  exponent.resize(m);
+  fitted.resize(m);
+  weight.resize(m);
+  for (Eigen::Index a = 0; a < m; ++a) {
+    const Eigen::Vector3d d = points[nn[std::size_t(a)]].cast<double>() - origin;
     const double u = d.dot(e1) / support, v = d.dot(e2) / support; // unit-free: well posed
-    basis[a] << 1.0, u, v, u * u, u * v, v * v;
-    height[a] = d.dot(n);
-    spatial[a] = std::exp(float(-double(d2[a]) / (support * support)));
+    const double h = d.dot(n);
+    const double uu = u * u, uv = u * v, vv = v * v;
+    table.col(a) << 1.0, u, v, uu, uv, vv,           // the basis
+        uu * u, uu * v, u * vv, vv * v,              // degree 3
+        uu * uu, uu * uv, uu * vv, uv * vv, vv * vv, // degree 4
+        h, h * u, h * v, h * uu, h * uv, h * vv;     // the height times the basis
+    height[a] = h;
+    spatial[a] = float(-double(d2[std::size_t(a)]) / (support * support));
   }
+  spatial = spatial.exp();
   // From the plane through the point, with a wide residual band that narrows: a narrow band at
   // once would leave too few neighbours on a curved surface to fix six coefficients. A small
   // ridge on the curvature terms keeps the fit posed where few neighbours remain.
@@ -51,30 +113,21 @@ sidedHeightFit(const std::vector<Eigen::Vector3f>& points, int self, const pcl::
   const double bands[] = {4.0 * band, 2.0 * band, band, band};
   for (const double b : bands) {
     const double inv_band2 = 1.0 / (2.0 * b * b);
-    Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
-    Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-    double total = 0.0;
-    for (std::size_t a = 0; a < m; ++a) {
-      const double r = height[a] - basis[a].dot(coef);
-      const double w =
-          spatial[a] * std::exp(float(-r * r * inv_band2)); // weights: float precision is plenty
-      // The lower triangle only (the matrix is symmetric). Written out rather than
-      // selfadjointView().rankUpdate(), which rounds w·b_col·b_row instead of w·b_row·b_col
-      // and so would move the labels of noisy meshes.
-      const Eigen::Matrix<double, 6, 1> wb = w * basis[a];
-      for (int j = 0; j < 6; ++j)
-        for (int i = j; i < 6; ++i)
-          normal(i, j) += wb[i] * basis[a][j];
-      rhs += w * height[a] * basis[a];
-      total += w;
-    }
+    fitted.noalias() = table.topRows<6>().transpose() * coef;
+    exponent = (-(height - fitted.array()).square() * inv_band2).cast<float>();
+    weight = (spatial * exponent.exp()).cast<double>();
+    const Eigen::Matrix<double, kMoments, 1> sum = table * weight;
+    const double total = sum[0];
     if (!(total > 1e-6))
       break;
-    for (int c = 3; c < 6; ++c)
-      normal(c, c) += 1e-3 * total;
-    const Eigen::Matrix<double, 6, 1> next =
-        normal.selfadjointView<Eigen::Lower>().ldlt().solve(rhs);
-    if (!next.allFinite())
+    Eigen::Matrix<double, 6, 6> normal;
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j)
+        normal(i, j) = sum[kProduct[i][j]];
+    for (int k = 3; k < 6; ++k)
+      normal(k, k) += 1e-3 * total;
+    Eigen::Matrix<double, 6, 1> next;
+    if (!solveCholesky6(normal, sum.tail<6>(), next) || !next.allFinite())
       break;
     coef = next;
   }
@@ -179,8 +232,8 @@ estimateStride(std::size_t samples)
 
 /// σ̂ of the samples as they are after denoising: what the grower may take as noise.
 double
-remainingNoise(const std::vector<Eigen::Vector3f>& positions,
-               SampleNeighbourhoods& neighbourhoods, int threads)
+remainingNoise(const std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& neighbourhoods,
+               int threads)
 {
   neighbourhoods.update(positions);
   return estimateSurfaceNoise(positions, neighbourhoods, estimateStride(positions.size()), threads)
