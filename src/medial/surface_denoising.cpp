@@ -8,6 +8,8 @@
 #include "../geometry/tangential_relaxation.h"
 #include "local_fit.h"
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
 #include <cmath>
 #include <tuple>
@@ -24,44 +26,6 @@ constexpr int kMoments = 21;
 constexpr int kProduct[6][6] = {{0, 1, 2, 3, 4, 5},    {1, 3, 4, 6, 7, 8},
                                 {2, 4, 5, 7, 8, 9},    {3, 6, 7, 10, 11, 12},
                                 {4, 7, 8, 11, 12, 13}, {5, 8, 9, 12, 13, 14}};
-
-/// Solves \a normal x = \a rhs by Cholesky; false when \a normal is not positive definite.
-/// Written out for the 6 × 6 systems of the fit, which Eigen's LLT solves through dynamic blocks
-/// at several times the cost.
-bool
-solveCholesky6(const Eigen::Matrix<double, 6, 6>& normal, const Eigen::Matrix<double, 6, 1>& rhs,
-               Eigen::Matrix<double, 6, 1>& x)
-{
-  double l[6][6];
-  for (int j = 0; j < 6; ++j) {
-    double d = normal(j, j);
-    for (int k = 0; k < j; ++k)
-      d -= l[j][k] * l[j][k];
-    if (!(d > 0.0))
-      return false;
-    l[j][j] = std::sqrt(d);
-    for (int i = j + 1; i < 6; ++i) {
-      double e = normal(i, j);
-      for (int k = 0; k < j; ++k)
-        e -= l[i][k] * l[j][k];
-      l[i][j] = e / l[j][j];
-    }
-  }
-  double y[6];
-  for (int i = 0; i < 6; ++i) {
-    double e = rhs[i];
-    for (int k = 0; k < i; ++k)
-      e -= l[i][k] * y[k];
-    y[i] = e / l[i][i];
-  }
-  for (int i = 5; i >= 0; --i) {
-    double e = y[i];
-    for (int k = i + 1; k < 6; ++k)
-      e -= l[k][i] * x[k];
-    x[i] = e / l[i][i];
-  }
-  return true;
-}
 
 /// Where point \a self lies on its own side of the surface: a quadratic height field over the
 /// neighbourhood's PCA tangent plane, fitted with spatial weights exp(−d²/support²) times
@@ -126,8 +90,12 @@ sidedHeightFit(const std::vector<Eigen::Vector3f>& points, int self, const pcl::
         normal(i, j) = sum[kProduct[i][j]];
     for (int k = 3; k < 6; ++k)
       normal(k, k) += 1e-3 * total;
-    Eigen::Matrix<double, 6, 1> next;
-    if (!solveCholesky6(normal, sum.tail<6>(), next) || !next.allFinite())
+    // The ridge keeps the curvature terms posed; LLT fails only where the neighbours fix no plane.
+    const Eigen::LLT<Eigen::Matrix<double, 6, 6>> llt(normal);
+    if (llt.info() != Eigen::Success)
+      break;
+    const Eigen::Matrix<double, 6, 1> next = llt.solve(sum.tail<6>());
+    if (!next.allFinite())
       break;
     coef = next;
   }
