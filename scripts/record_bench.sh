@@ -14,7 +14,8 @@ cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
 {
   echo "date: $(date -u +%Y-%m-%dT%H:%MZ)"
   echo "machine: ${cpu:-unknown cpu}, $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo)"
-  echo "commit: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)$(git -C "$root" diff --quiet HEAD 2>/dev/null || echo ' (with uncommitted changes)')"
+  # Records written by other runs are not changes to the code being measured.
+  echo "commit: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)$(git -C "$root" diff --quiet HEAD -- . ':(exclude)bench/results' ':(exclude)docs/benchmarks.md' 2>/dev/null || echo ' (with uncommitted changes)')"
   echo "command: $*"
   echo "---"
   "$@"

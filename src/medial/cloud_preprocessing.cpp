@@ -238,20 +238,24 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
   }
 
   // 2. Resample to the working size, then drop exact duplicates.
-  std::vector<Eigen::Vector3f> positions(candidates.size());
+  std::vector<Eigen::Vector3f> input_positions(candidates.size());
   for (std::size_t i = 0; i < candidates.size(); ++i)
-    positions[i] = in[candidates[i]].getVector3fMap();
+    input_positions[i] = in[candidates[i]].getVector3fMap();
   // representative[c]: the candidate (position in candidates) standing for candidate c.
   std::vector<int> representative(candidates.size());
-  const double voxel = voxelSizeForCount(positions, working_size_);
+  const double voxel = voxelSizeForCount(input_positions, working_size_);
   std::vector<int> kept;
+  // Jittered picks: centre picks sit on a lattice of the grid's axes, which costs the clean
+  // dense clouds of axis-aligned shapes their parts (docs/noise.md, "Dense clouds").
   if (voxel > 0.0)
-    kept = voxelRepresentatives(positions, voxel, &representative);
+    kept = voxelRepresentatives(input_positions, voxel, &representative, VoxelPick::Jittered);
   else {
     kept.resize(candidates.size());
     std::iota(kept.begin(), kept.end(), 0);
     representative = kept;
   }
+  // The points that thinning set aside still measure the surface: the smoothing fits to them.
+  const bool thinned = kept.size() < candidates.size();
   for (int& k : kept)
     k = candidates[k];
   dropExactDuplicates(in, kept);
@@ -279,7 +283,8 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
     for (std::size_t i = 0; i < cloud.size(); ++i)
       positions[i] = cloud[i].getVector3fMap();
     const detail::SurfaceDenoising denoising =
-        detail::denoiseCloudSurface(positions, 2 * normal_k_, smoothing_iterations_, threads);
+        detail::denoiseCloudSurface(positions, 2 * normal_k_, smoothing_iterations_, threads,
+                                    thinned ? &input_positions : nullptr);
     smoothing_passes_ = denoising.passes;
     remaining_sigma_ = denoising.remaining_sigma;
     noise_sigma_ = denoising.noise.sigma;

@@ -22,25 +22,29 @@ namespace {
 /// times each of the basis 1, u, v, u², uv, v².
 constexpr int kMoments = 21;
 
+/// A fit to dense samples takes at most this many times the working fit's neighbours.
+constexpr int kDenseFitCap = 8;
+
 /// kProduct[i][j]: the monomial of the table that is basis i times basis j.
 constexpr int kProduct[6][6] = {{0, 1, 2, 3, 4, 5},    {1, 3, 4, 6, 7, 8},
                                 {2, 4, 5, 7, 8, 9},    {3, 6, 7, 10, 11, 12},
                                 {4, 7, 8, 11, 12, 13}, {5, 8, 9, 12, 13, 14}};
 
-/// Where point \a self lies on its own side of the surface: a quadratic height field over the
+/// Where point \a at lies on its own side of the surface: a quadratic height field over the
 /// neighbourhood's PCA tangent plane, fitted with spatial weights exp(−d²/support²) times
 /// Gaussian weights (bandwidth \a band) on each neighbour's residual, refitted a few times
-/// from the plane through the point itself. The residual weights are what keep the two sides of
+/// from the plane through the point itself. \a nn (with squared distances \a d2 from \a at) index
+/// \a points, which need not hold \a at. The residual weights are what keep the two sides of
 /// a thin wall apart: a plain fit over neighbours from both sides lands in the middle of the
 /// wall and flattens the wall into one sheet (the winding number then sees no volume there).
 Eigen::Vector3f
-sidedHeightFit(const std::vector<Eigen::Vector3f>& points, int self, const pcl::Indices& nn,
-               const std::vector<float>& d2, double support, double band)
+sidedHeightFit(const Eigen::Vector3f& at, const std::vector<Eigen::Vector3f>& points,
+               const pcl::Indices& nn, const std::vector<float>& d2, double support, double band)
 {
   const auto pca = neighbourhoodPca(points, nn);
   const Eigen::Vector3d n = pca.eigenvectors().col(0), e1 = pca.eigenvectors().col(1),
                         e2 = pca.eigenvectors().col(2);
-  const Eigen::Vector3d origin = points[self].cast<double>();
+  const Eigen::Vector3d origin = at.cast<double>();
   const Eigen::Index m = static_cast<Eigen::Index>(nn.size());
   // The fit runs for every sample in every pass. Each refit is a weighted sum over the
   // neighbours of their monomials u^a v^b (a + b <= 4: the normal matrix) and of their heights
@@ -208,16 +212,49 @@ remainingNoise(const std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoo
       .sigma;
 }
 
+/// The input's samples before they were thinned to the working samples: every pass fits a
+/// working sample to the dense samples around it, which hold several times the information
+/// of its working neighbours over the same area. Their noise stays as it was, so the fits keep
+/// the band of the input's noise.
+struct DenseSamples
+{
+  const std::vector<Eigen::Vector3f>* points = nullptr;
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud;
+  PointKdTree tree;
+  int k = 0;                      ///< dense neighbours of a fit
+  std::vector<pcl::Indices> near; ///< per working sample, its dense neighbours
+  double band = 0.0;              ///< 0 until the first pass has estimated the input's noise
+
+  /// Finds the neighbours of every working sample where it is now.
+  void
+  search(const std::vector<Eigen::Vector3f>& positions, int threads)
+  {
+    near.resize(positions.size());
+    const int n = static_cast<int>(positions.size());
+#pragma omp parallel num_threads(threads)
+    {
+      std::vector<float> d2;
+#pragma omp for schedule(static)
+      for (int i = 0; i < n; ++i) {
+        const pcl::PointXYZ at(positions[i].x(), positions[i].y(), positions[i].z());
+        if (tree.nearestKSearch(at, k, near[std::size_t(i)], d2) <= 0)
+          near[std::size_t(i)].clear();
+      }
+    }
+  }
+};
+
 /// One pass of sided quadratic (MLS-like) smoothing: every sample moves onto the height field
-/// of its own side fitted to its wide neighbourhood (sidedHeightFit). A plane fit would pull
-/// thin tubes inwards by about a²/(4R) (a the neighbourhood's size); a quadratic does not.
-/// The residual bandwidth is 1.5 × the samples' noise (floored at a tenth of the spacing).
-/// Nothing moves when that noise is below \a min_noise_ratio × the spacing. The estimate goes to
-/// \a estimate when given. Returns the median move divided by the median spacing (0 when nothing
-/// moved).
+/// of its own side fitted to its wide neighbourhood (sidedHeightFit), or to its \a dense
+/// neighbours when given. A plane fit would pull thin tubes inwards by about a²/(4R) (a the
+/// neighbourhood's size); a quadratic does not. The residual bandwidth is 1.5 × the samples'
+/// noise (floored at a tenth of the spacing), or the dense samples' band. Nothing moves when
+/// that noise is below \a min_noise_ratio × the spacing. The estimate goes to \a estimate when
+/// given. Returns the median move divided by the median spacing (0 when nothing moved).
 double
 smoothSurface(std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& neighbourhoods,
-              int threads, double min_noise_ratio, SurfaceNoise* estimate)
+              int threads, double min_noise_ratio, SurfaceNoise* estimate,
+              const DenseSamples* dense = nullptr)
 {
   const int n = static_cast<int>(positions.size());
   if (n < 6)
@@ -230,21 +267,37 @@ smoothSurface(std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& nei
   if (estimate)
     *estimate = found;
   const double noise = found.sigma, spacing = found.spacing;
-  const double band = std::max(1.5 * noise, 0.1 * spacing);
+  const double band =
+      dense && dense->band > 0.0 ? dense->band : std::max(1.5 * noise, 0.1 * spacing);
   if (!(spacing > 0.0) || noise < min_noise_ratio * spacing)
     return 0.0;
   std::vector<Eigen::Vector3f> moved(positions);
   std::vector<float> moves(n, 0.0f);
+  const std::vector<Eigen::Vector3f>& source = dense ? *dense->points : positions;
 #pragma omp parallel num_threads(threads)
   {
     pcl::Indices nn;
     std::vector<float> d2;
 #pragma omp for schedule(static)
     for (int i = 0; i < n; ++i) {
-      neighbourhoods.wide(i, nn, d2);
+      if (dense) {
+        // Later passes move the samples by far less than the neighbourhood's size, so the
+        // neighbours found after the first pass serve them all; only the distances change.
+        nn = dense->near[std::size_t(i)];
+        d2.resize(nn.size());
+        for (std::size_t a = 0; a < nn.size(); ++a)
+          d2[a] = ((*dense->points)[nn[a]] - positions[i]).squaredNorm();
+        if (!nn.empty()) { // the farthest last, as the fit reads its support there
+          const auto far = std::max_element(d2.begin(), d2.end()) - d2.begin();
+          std::swap(nn[std::size_t(far)], nn.back());
+          std::swap(d2[std::size_t(far)], d2.back());
+        }
+      }
+      else
+        neighbourhoods.wide(i, nn, d2);
       if (nn.size() < 6 || !(d2.back() > 0.0f))
         continue;
-      moved[i] = sidedHeightFit(positions, i, nn, d2, std::sqrt(double(d2.back())), band);
+      moved[i] = sidedHeightFit(positions[i], source, nn, d2, std::sqrt(double(d2.back())), band);
       moves[i] = (moved[i] - positions[i]).norm();
     }
   }
@@ -439,16 +492,26 @@ private:
 
 } // namespace
 
+namespace {
+
+/// The passes of denoiseSurface(), fitting to \a dense when given.
 SurfaceDenoising
-denoiseSurface(std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& neighbourhoods,
-               int max_passes, int threads, double min_noise_ratio)
+smoothingPasses(std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& neighbourhoods,
+                int max_passes, int threads, double min_noise_ratio, DenseSamples* dense)
 {
   constexpr double kStillRatio = 0.05;
   SurfaceDenoising result;
   for (int pass = 0; pass < max_passes; ++pass) {
     const double moved =
         smoothSurface(positions, neighbourhoods, threads, pass == 0 ? min_noise_ratio : 0.0,
-                      pass == 0 ? &result.noise : nullptr);
+                      pass == 0 ? &result.noise : nullptr, dense);
+    // The first pass moves the samples across the surface by about the noise; the later
+    // passes fit around where they are then, which on a thin wall is the own side.
+    if (dense && pass == 0) {
+      dense->band = std::max(1.5 * result.noise.sigma, 0.1 * result.noise.spacing);
+      if (moved >= kStillRatio)
+        dense->search(positions, threads);
+    }
     if (moved > 0.0)
       ++result.passes;
     if (moved < kStillRatio)
@@ -457,11 +520,34 @@ denoiseSurface(std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& ne
   return result;
 }
 
+} // namespace
+
 SurfaceDenoising
-denoiseCloudSurface(std::vector<Eigen::Vector3f>& positions, int k, int max_passes, int threads)
+denoiseSurface(std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& neighbourhoods,
+               int max_passes, int threads, double min_noise_ratio)
+{
+  return smoothingPasses(positions, neighbourhoods, max_passes, threads, min_noise_ratio, nullptr);
+}
+
+SurfaceDenoising
+denoiseCloudSurface(std::vector<Eigen::Vector3f>& positions, int k, int max_passes, int threads,
+                    const std::vector<Eigen::Vector3f>* dense_points)
 {
   NearestNeighbourhoods neighbourhoods(k);
-  SurfaceDenoising result = denoiseSurface(positions, neighbourhoods, max_passes, threads);
+  DenseSamples dense;
+  const bool use_dense = dense_points && dense_points->size() > positions.size();
+  if (use_dense) {
+    // As many dense neighbours as the k working ones span, at most kDenseFitCap · k: the
+    // fit's cost grows with them.
+    const double ratio = double(dense_points->size()) / double(positions.size());
+    dense.k = int(std::min(double(kDenseFitCap) * k, std::ceil(ratio * k)));
+    dense.points = dense_points;
+    dense.cloud = toXYZ(*dense_points);
+    dense.tree.setInputCloud(dense.cloud);
+    dense.search(positions, threads);
+  }
+  SurfaceDenoising result = smoothingPasses(positions, neighbourhoods, max_passes, threads, 0.1,
+                                            use_dense ? &dense : nullptr);
   if (result.passes > 0)
     result.remaining_sigma = remainingNoise(positions, neighbourhoods, threads);
   return result;

@@ -105,9 +105,15 @@ SurfaceDenoising
 denoiseSurface(std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& neighbourhoods,
                int max_passes, int threads, double min_noise_ratio = 0.1);
 
-/** \brief denoiseSurface() of a point cloud: close = 8 nearest points, wide = \a k nearest. */
+/** \brief denoiseSurface() of a point cloud: close = 8 nearest points, wide = \a k nearest.
+ *
+ * When \a dense holds more samples of the same surface (the input before it was thinned to
+ * \a positions), every pass fits each sample to its dense neighbours instead: as many as its
+ * k nearest samples span, at most 8 k, found once; the band stays that of the input's noise.
+ */
 SurfaceDenoising
-denoiseCloudSurface(std::vector<Eigen::Vector3f>& positions, int k, int max_passes, int threads);
+denoiseCloudSurface(std::vector<Eigen::Vector3f>& positions, int k, int max_passes, int threads,
+                    const std::vector<Eigen::Vector3f>* dense = nullptr);
 
 /** \brief Median over the faces of the angle (degrees) between a face's normal and that of its
  * flattest edge neighbour. A clean triangulation keeps it small whatever the shape: triangles

@@ -4,6 +4,8 @@
  */
 #include <segmat/medial/voxel_sampling.h>
 
+#include "../common/splitmix.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -100,7 +102,7 @@ voxelCellIndices(const std::vector<Eigen::Vector3f>& points, double voxel_size, 
 
 std::vector<int>
 voxelRepresentatives(const std::vector<Eigen::Vector3f>& points, double voxel_size,
-                     std::vector<int>* representative_of)
+                     std::vector<int>* representative_of, VoxelPick pick)
 {
   const VoxelGrid grid = makeGrid(points, voxel_size);
   struct Entry
@@ -112,10 +114,15 @@ voxelRepresentatives(const std::vector<Eigen::Vector3f>& points, double voxel_si
   std::vector<Entry> entries(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Eigen::Array3i c = grid.cell(points[i]);
-    const Eigen::Vector3d centre =
-        grid.origin + grid.size * (c.cast<double>() + 0.5).matrix();
-    entries[i] = {VoxelGrid::key(c), (points[i].cast<double>() - centre).squaredNorm(),
-                  static_cast<int>(i)};
+    const std::uint64_t key = VoxelGrid::key(c);
+    Eigen::Array3d offset = Eigen::Array3d::Constant(0.5);
+    if (pick == VoxelPick::Jittered)
+      // Three draws of the splitmix stream that the cell's key seeds, each in [0, 1).
+      for (int a = 0; a < 3; ++a)
+        offset[a] = double(detail::splitmix64(key + std::uint64_t(a + 1) * 0x9E3779B97F4A7C15ull) >>
+                           11) * 0x1.0p-53;
+    const Eigen::Vector3d target = grid.origin + grid.size * (c.cast<double>() + offset).matrix();
+    entries[i] = {key, (points[i].cast<double>() - target).squaredNorm(), static_cast<int>(i)};
   }
   std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
     return std::tie(a.key, a.distance, a.index) < std::tie(b.key, b.distance, b.index);

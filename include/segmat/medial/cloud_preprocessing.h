@@ -23,8 +23,9 @@ namespace segmat {
  * Steps, in order:
  *  1. drop points with a non-finite coordinate (and, when input normals are used, points whose
  *     normal is non-finite or zero; if more than 1 % are bad the normals are estimated instead);
- *  2. keep one point per voxel (segmat::voxelRepresentativesNear) when there are more than
- *     the working size, then drop exact duplicates (lowest index kept) and isolated points
+ *  2. keep one point per voxel (segmat::voxelRepresentatives, VoxelPick::Jittered: centre
+ *     picks would leave a lattice of the grid's axes) when there are more than the working
+ *     size, then drop exact duplicates (lowest index kept) and isolated points
  *     (scanner outliers: mean distance to the 8 nearest neighbours above 4 times the cloud's
  *     median and twice the median of those neighbours' own, so that a sparser region of a scan
  *     stays; each outlier would be a surface sample of its own inside or around the shape —
@@ -35,7 +36,9 @@ namespace segmat {
  *     as a Gaussian σ, above 10 % of the spacing; clean samples show 2–4 %), up to
  *     setSmoothingIterations() passes of *sided* quadratic smoothing — each point moves onto
  *     a height field fitted with weights on the residual (bandwidth 1.5 σ), so the two sides of
- *     a wall thinner than the neighbourhood stay apart instead of collapsing into one sheet —;
+ *     a wall thinner than the neighbourhood stay apart instead of collapsing into one sheet;
+ *     when step 2 thinned the cloud, to the input's points around it, several times as many
+ *     over the same area —;
  *     then pcl::NormalEstimationOMP over k neighbours (the result does not depend on the thread
  *     count: every point's normal is computed alone), oriented by segmat::NormalOrientation.
  */

@@ -11,22 +11,35 @@
 
 namespace segmat {
 
+/** \brief Which point of an occupied voxel represents it. */
+enum class VoxelPick
+{
+  /// The point nearest to the cell's centre, like pcl::UniformSampling. On a dense sampling the
+  /// representatives then lie close to a lattice of the grid's axes.
+  Centre,
+  /// The point nearest to a target placed in the cell by a hash of the cell's grid coordinates
+  /// (jittered, or stratified, sampling): no lattice, and still independent of the points'
+  /// order, of the thread count and of where the shape sits.
+  Jittered,
+};
+
 /** \brief One representative point per occupied cubic voxel.
  *
  * Voxels are cells of side \a voxel_size anchored at the points' minimum corner. In each occupied
- * cell the point nearest the cell centre is kept (ties: the lower index), like
- * pcl::UniformSampling, so the representatives are input points (normals and indices survive)
- * rather than averages (averaging would cancel the opposite normals of a thin plate).
- * O(n log n), deterministic.
+ * cell the point nearest the cell's target (\a pick) is kept (ties: the lower index), so the
+ * representatives are input points (normals and indices survive) rather than averages
+ * (averaging would cancel the opposite normals of a thin plate). O(n log n), deterministic.
  * \param[in] points the points (all finite)
  * \param[in] voxel_size cell side (> 0; raised when the grid would exceed 2^21 cells per axis)
  * \param[out] representative_of for every point, the index of its cell's representative; may
  *             be nullptr
+ * \param[in] pick the cell's target: its centre, or a jittered point
  * \return indices into \a points, ascending
  */
 std::vector<int>
 voxelRepresentatives(const std::vector<Eigen::Vector3f>& points, double voxel_size,
-                     std::vector<int>* representative_of = nullptr);
+                     std::vector<int>* representative_of = nullptr,
+                     VoxelPick pick = VoxelPick::Centre);
 
 /** \brief The occupied cell of every point, numbered 0..cells−1 in the order of the cells'
  * (x, y, z) grid keys. Cells as in voxelRepresentatives().
