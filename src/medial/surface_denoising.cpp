@@ -225,10 +225,15 @@ struct DenseSamples
   std::vector<pcl::Indices> near; ///< per working sample, its dense neighbours
   double band = 0.0;              ///< 0 until the first pass has estimated the input's noise
 
-  /// Finds the neighbours of every working sample where it is now.
+  /// Finds the neighbours of every working sample where it is now (the kd-tree of the dense
+  /// samples is built on the first call: a clean cloud never needs it).
   void
   search(const std::vector<Eigen::Vector3f>& positions, int threads)
   {
+    if (!cloud) {
+      cloud = toXYZ(*points);
+      tree.setInputCloud(cloud);
+    }
     near.resize(positions.size());
     const int n = static_cast<int>(positions.size());
 #pragma omp parallel num_threads(threads)
@@ -254,7 +259,7 @@ struct DenseSamples
 double
 smoothSurface(std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& neighbourhoods,
               int threads, double min_noise_ratio, SurfaceNoise* estimate,
-              const DenseSamples* dense = nullptr)
+              DenseSamples* dense = nullptr)
 {
   const int n = static_cast<int>(positions.size());
   if (n < 6)
@@ -271,6 +276,8 @@ smoothSurface(std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& nei
       dense && dense->band > 0.0 ? dense->band : std::max(1.5 * noise, 0.1 * spacing);
   if (!(spacing > 0.0) || noise < min_noise_ratio * spacing)
     return 0.0;
+  if (dense && dense->near.empty())
+    dense->search(positions, threads);
   std::vector<Eigen::Vector3f> moved(positions);
   std::vector<float> moves(n, 0.0f);
   const std::vector<Eigen::Vector3f>& source = dense ? *dense->points : positions;
@@ -542,9 +549,6 @@ denoiseCloudSurface(std::vector<Eigen::Vector3f>& positions, int k, int max_pass
     const double ratio = double(dense_points->size()) / double(positions.size());
     dense.k = int(std::min(double(kDenseFitCap) * k, std::ceil(ratio * k)));
     dense.points = dense_points;
-    dense.cloud = toXYZ(*dense_points);
-    dense.tree.setInputCloud(dense.cloud);
-    dense.search(positions, threads);
   }
   SurfaceDenoising result = smoothingPasses(positions, neighbourhoods, max_passes, threads, 0.1,
                                             use_dense ? &dense : nullptr);
