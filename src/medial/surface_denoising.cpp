@@ -223,7 +223,7 @@ struct DenseSamples
   PointKdTree tree;
   int k = 0;                      ///< dense neighbours of a fit
   std::vector<pcl::Indices> near; ///< per working sample, its dense neighbours
-  double band = 0.0;              ///< 0 until the first pass has estimated the input's noise
+  double band = 0.0;              ///< 0 until the noise of the input is estimated
 
   /// Finds the neighbours of every working sample where it is now (the kd-tree of the dense
   /// samples is built on the first call: a clean cloud never needs it).
@@ -289,7 +289,7 @@ smoothSurface(std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& nei
     for (int i = 0; i < n; ++i) {
       if (dense) {
         // Later passes move the samples by far less than the neighbourhood's size, so the
-        // neighbours found after the first pass serve them all; only the distances change.
+        // neighbours found after the opening pass serve them all; only the distances change.
         nn = dense->near[std::size_t(i)];
         d2.resize(nn.size());
         for (std::size_t a = 0; a < nn.size(); ++a)
@@ -512,7 +512,7 @@ smoothingPasses(std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& n
     const double moved =
         smoothSurface(positions, neighbourhoods, threads, pass == 0 ? min_noise_ratio : 0.0,
                       pass == 0 ? &result.noise : nullptr, dense);
-    // The first pass moves the samples across the surface by about the noise; the later
+    // The opening pass moves the samples across the surface by about the noise; the later
     // passes fit around where they are then, which on a thin wall is the own side.
     if (dense && pass == 0) {
       dense->band = std::max(1.5 * result.noise.sigma, 0.1 * result.noise.spacing);

@@ -109,7 +109,7 @@ denoiseSurface(std::vector<Eigen::Vector3f>& positions, SampleNeighbourhoods& ne
  *
  * When \a dense holds more samples of the same surface (the input before it was thinned to
  * \a positions), every pass fits each sample to its dense neighbours instead: as many as its
- * k nearest samples span, at most 8 k, searched before the first pass and again after it; the
+ * k nearest samples span, at most 8 k, searched before the opening pass and again after it; the
  * band stays that of the input's noise.
  */
 SurfaceDenoising
