@@ -32,6 +32,9 @@
  * (CloudPreprocessing, as the segmentation computes them) to the clean mesh, and their remaining
  * σ̂, both in % of the diagonal; --true-surface moves every noisy point onto the nearest point
  * of the clean mesh before segmenting, which is what a perfect denoiser would hand on.
+ * --normals gives every cloud point the normal of the face it was sampled from (outward; the
+ * noise moves the point and leaves its normal), as a scanner or a CAD sampler would, and the
+ * segmentation reads them (CloudSegmentation::setUseInputNormalsFlag(true)).
  * Prints one row per shape and level on stderr, then a table per level: 1 − RI, parts per
  * shape, median and max seconds per shape (one thread, segmentation from the file's geometry),
  * with several runs per shape the 1 − RI between two runs of the same shape (the mean over its
@@ -161,7 +164,7 @@ workingSurfaceError(const segmat::test::SampledCloud& cloud, const TrueSurface& 
 Result
 segmentCloud(const segmat::test::SampledCloud& clean, double level, std::uint32_t seed,
              const std::vector<std::vector<int>>& humans, const std::string& write_path,
-             const TrueSurface& truth)
+             const TrueSurface& truth, bool normals)
 {
   segmat::test::SampledCloud noisy = clean;
   if (level > 0.0)
@@ -185,7 +188,9 @@ segmentCloud(const segmat::test::SampledCloud& clean, double level, std::uint32_
       }
     });
   }
-  const segmat::bench::CloudRun run = segmat::bench::segmentSampledCloud(noisy, {});
+  segmat::bench::CloudRunSettings settings;
+  settings.normals = normals;
+  const segmat::bench::CloudRun run = segmat::bench::segmentSampledCloud(noisy, settings);
   Result r;
   r.seconds = run.seconds;
   r.stages = run.stages;
@@ -247,7 +252,7 @@ main(int argc, char** argv)
   std::size_t points = 20000;
   std::uint32_t seed_offset = 0;
   int draws = 1, noise_draws = 1;
-  bool principal_axes = true;
+  bool principal_axes = true, normals = false;
   TrueSurface truth;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -271,6 +276,8 @@ main(int argc, char** argv)
       truth.project = true;
     else if (arg == "--surface-error")
       truth.measure = true;
+    else if (arg == "--normals")
+      normals = true;
     else if (arg == "--draws" && has_value)
       draws = std::max(1, std::atoi(argv[++i]));
     else if (arg == "--noise-draws" && has_value)
@@ -283,16 +290,16 @@ main(int argc, char** argv)
       std::cerr << "usage: bench_noise [PSB_DIR] [--kind mesh|cloud] [--levels 0,0.2,0.5,1] "
                    "[--models 1,21,...|--half tune|check] [--points N] [--seed-offset K] "
                    "[--draws K] [--noise-draws K] [--input-axes] [--write DIR] "
-                   "[--surface-error] [--true-surface]\n";
+                   "[--surface-error] [--true-surface] [--normals]\n";
       return arg == "-h" || arg == "--help" ? 0 : 2;
     }
   }
   if ((kind != "mesh" && kind != "cloud") || (!half.empty() && half != "tune" && half != "check") ||
       (draws > 1 && kind != "mesh") || (noise_draws > 1 && !write_dir.empty()) ||
-      ((truth.project || truth.measure) && kind != "cloud")) {
+      ((truth.project || truth.measure || normals) && kind != "cloud")) {
     std::cerr << "bench_noise: --kind is mesh or cloud, --half is tune or check, --draws is for "
-                 "meshes, --write takes one noise draw, --surface-error and --true-surface are "
-                 "for clouds\n";
+                 "meshes, --write takes one noise draw, --surface-error, --true-surface and "
+                 "--normals are for clouds\n";
     return 2;
   }
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
@@ -357,7 +364,8 @@ main(int argc, char** argv)
             Result r = kind == "mesh"
                            ? segmentMesh(mesh, levels[l], seed, std::uint32_t(d), principal_axes,
                                          humans, write_path)
-                           : segmentCloud(cloud, levels[l], seed, humans, write_path, truth);
+                           : segmentCloud(cloud, levels[l], seed, humans, write_path, truth,
+                                          normals);
             r.draw = k * draws + d;
             results[l].push_back(r);
             std::fprintf(stderr, "%s %d sigma %g%% draw %d: 1-RI %.4f, %d parts, %.2f s\n",
@@ -382,7 +390,8 @@ main(int argc, char** argv)
     return 1;
   }
 
-  std::printf("%s, %zu shapes%s%s\n\n", kind == "mesh" ? "meshes" : "clouds (no normals)",
+  std::printf("%s, %zu shapes%s%s\n\n",
+              kind == "mesh" ? "meshes" : normals ? "clouds (with normals)" : "clouds (no normals)",
               scored, half.empty() ? "" : ", half ",
               half.c_str());
   const int runs = draws * noise_draws; // segmentations per shape and level

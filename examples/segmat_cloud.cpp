@@ -62,7 +62,8 @@ run(int argc, char** argv)
                       "segmat_cloud cloud.pcd -o parts   # writes parts.pcd, parts.ply, parts.labels");
   parser.positional("CLOUD", "point cloud (.pcd, .ply, .xyz/.txt), with or without normals",
                     cloud_path);
-  parser.flag(kInput, "--estimate-normals", "ignore the file's normals and estimate them",
+  parser.flag(kInput, "--estimate-normals", "ignore the file's normals and estimate them\n"
+              "(a noisy cloud's are estimated anyway)",
               estimate_normals);
   parser.add(kOutput, "-o", "PREFIX",
              "writes PREFIX.pcd (x y z label), PREFIX.ply (points coloured by\n"

@@ -6,9 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <utility>
 
 using namespace segmat;
 using namespace segmat::test;
@@ -148,8 +150,10 @@ TEST(CloudPreprocessing, ResamplesDropsNonFiniteAndDuplicatesAndIsThreadIndepend
   for (std::size_t i = 0; i < one.size(); ++i)
     ASSERT_EQ(one[i].getNormalVector3fMap(), two[i].getNormalVector3fMap());
 
-  // Exact duplicates collapse onto the first copy; input normals are kept (normalised).
-  auto doubled = sphereCloud(400, 2).toPointNormal();
+  // Exact duplicates collapse onto the first copy; input normals are kept (normalised). Dense
+  // enough to be clean: 400 points of a unit sphere would read its curvature as noise, and a
+  // noisy cloud's normals are set aside.
+  auto doubled = sphereCloud(4000, 2).toPointNormal();
   const std::size_t n = doubled->size();
   for (std::size_t i = 0; i < n; ++i) {
     auto p = (*doubled)[i];
@@ -157,6 +161,7 @@ TEST(CloudPreprocessing, ResamplesDropsNonFiniteAndDuplicatesAndIsThreadIndepend
     doubled->push_back(p);
   }
   pre.setInputCloud(doubled);
+  pre.setWorkingSize(20000); // every distinct point
   pre.setUseInputNormalsFlag(true);
   pcl::PointCloud<pcl::PointNormal> dedup;
   ASSERT_TRUE(pre.compute(dedup));
@@ -368,4 +373,83 @@ TEST(CloudPreprocessing, SetsIsolatedPointsAsideButKeepsSparseRegions)
   // The flying points still get a stand-in (the nearest working point) for their label.
   for (std::size_t i = surface; i < cloud->size(); ++i)
     EXPECT_GE(pre.getInputToWorking()[i], 0) << i;
+}
+
+namespace {
+
+/// Largest angle (degrees) between a working normal and the line from the centre through its
+/// point, and how many working normals point away from the centre (a unit sphere's cloud).
+std::pair<double, std::size_t>
+radialDeviation(const pcl::PointCloud<pcl::PointNormal>& working)
+{
+  double worst = 0.0;
+  std::size_t outward = 0;
+  for (const auto& p : working) {
+    const Eigen::Vector3d radial = p.getVector3fMap().cast<double>().normalized();
+    const Eigen::Vector3d n = p.getNormalVector3fMap().cast<double>();
+    worst = std::max(worst, std::acos(std::min(1.0, std::abs(n.dot(radial)))) * 180.0 / M_PI);
+    outward += n.dot(radial) > 0.0;
+  }
+  return {worst, outward};
+}
+
+/// \a pre run on \a cloud into \a working, with the cloud's normals or without.
+void
+preprocess(CloudPreprocessing& pre, const pcl::PointCloud<pcl::PointNormal>::Ptr& cloud,
+           bool use_normals, pcl::PointCloud<pcl::PointNormal>& working)
+{
+  pre.setInputCloud(cloud);
+  pre.setUseInputNormalsFlag(use_normals);
+  ASSERT_TRUE(pre.compute(working));
+}
+
+} // namespace
+
+// A clean cloud keeps the normals it came with, and its noise is still measured and reported:
+// a unit sphere whose given normals lean 40° off the radius keeps them as given.
+TEST(CloudPreprocessing, CleanCloudKeepsItsInputNormalsAndIsMeasured)
+{
+  auto cloud = sphereCloud(20000, 5).toPointNormal();
+  for (auto& p : *cloud) {
+    const Eigen::Vector3f radial = p.getVector3fMap().normalized();
+    const float lean = 40.0f * float(M_PI) / 180.0f;
+    p.getNormalVector3fMap() = std::cos(lean) * radial + std::sin(lean) * radial.unitOrthogonal();
+  }
+  CloudPreprocessing pre;
+  pcl::PointCloud<pcl::PointNormal> working;
+  preprocess(pre, cloud, true, working);
+  EXPECT_FALSE(pre.getNormalsEstimated());
+  EXPECT_EQ(pre.getSmoothingPassesApplied(), 0);
+  // Clean samples sit off the plane of their 8 nearest neighbours by a few percent of the
+  // spacing (the sphere's curvature): measured, below the 10 % that makes a cloud noisy.
+  EXPECT_GT(pre.getEstimatedNoise(), 0.0);
+  EXPECT_LT(pre.getEstimatedNoise(), 0.1 * pre.getEstimatedSpacing());
+  const auto [worst, outward] = radialDeviation(working);
+  EXPECT_NEAR(worst, 40.0, 0.01);
+  EXPECT_EQ(outward, working.size());
+}
+
+// A noisy cloud's normals are set aside: smoothing carries points across thin walls, where
+// their own normals point the wrong way. All given normals reversed, the noisy sphere still
+// comes out with outward normals, oriented as for a cloud without normals.
+TEST(CloudPreprocessing, NoisyCloudSetsItsInputNormalsAside)
+{
+  SampledCloud sphere = sphereCloud(20000, 6);
+  addGaussianNoise(sphere, 0.005, 3);
+  auto cloud = sphere.toPointNormal();
+  for (auto& p : *cloud)
+    p.getNormalVector3fMap() *= -1.0f;
+  CloudPreprocessing pre, without;
+  pcl::PointCloud<pcl::PointNormal> working, same;
+  preprocess(pre, cloud, true, working);
+  EXPECT_TRUE(pre.getNormalsEstimated());
+  EXPECT_GE(pre.getSmoothingPassesApplied(), 1);
+  EXPECT_EQ(radialDeviation(working).second, working.size());
+
+  preprocess(without, cloud, false, same);
+  ASSERT_EQ(same.size(), working.size());
+  for (std::size_t i = 0; i < same.size(); ++i) {
+    EXPECT_EQ(same[i].getVector3fMap(), working[i].getVector3fMap());
+    EXPECT_EQ(same[i].getNormalVector3fMap(), working[i].getNormalVector3fMap());
+  }
 }

@@ -271,26 +271,32 @@ CloudPreprocessing::compute(pcl::PointCloud<pcl::PointNormal>& working)
   for (std::size_t i = 0; i < kept.size(); ++i) {
     cloud[i] = in[kept[i]];
     cloud[i].curvature = 0.0f;
+  }
+
+  // 3. Every cloud is tested for noise and, when noisy, smoothed. A clean cloud keeps the
+  //    normals it came with (when they are used); a noisy one has them set aside and estimated
+  //    from the smoothed points, as a cloud without normals: smoothing carries points that the
+  //    noise moved across a thin wall onto its other side, where their own normals point the
+  //    wrong way, and normals computed from noisy points are noisy themselves.
+  const int threads = detail::threadCount(threads_);
+  std::vector<Eigen::Vector3f> positions(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    positions[i] = cloud[i].getVector3fMap();
+  const detail::SurfaceDenoising denoising =
+      detail::denoiseCloudSurface(positions, 2 * normal_k_, smoothing_iterations_, threads,
+                                  thinned ? &input_positions : nullptr);
+  smoothing_passes_ = denoising.passes;
+  remaining_sigma_ = denoising.remaining_sigma;
+  noise_sigma_ = denoising.noise.sigma;
+  spacing_ = denoising.noise.spacing;
+  estimate = estimate || smoothing_passes_ > 0;
+  normals_estimated_ = estimate;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    cloud[i].getVector3fMap() = positions[i];
     if (!estimate)
       cloud[i].getNormalVector3fMap().normalize();
   }
-
-  // 3. Estimated normals: smoothing, PCA, then MST orientation.
   if (estimate) {
-    normals_estimated_ = true;
-    const int threads = detail::threadCount(threads_);
-    std::vector<Eigen::Vector3f> positions(cloud.size());
-    for (std::size_t i = 0; i < cloud.size(); ++i)
-      positions[i] = cloud[i].getVector3fMap();
-    const detail::SurfaceDenoising denoising =
-        detail::denoiseCloudSurface(positions, 2 * normal_k_, smoothing_iterations_, threads,
-                                    thinned ? &input_positions : nullptr);
-    smoothing_passes_ = denoising.passes;
-    remaining_sigma_ = denoising.remaining_sigma;
-    noise_sigma_ = denoising.noise.sigma;
-    spacing_ = denoising.noise.spacing;
-    for (std::size_t i = 0; i < cloud.size(); ++i)
-      cloud[i].getVector3fMap() = positions[i];
     // PCL's PCA normal and viewpoint flip (as NormalEstimationOMP computes them, same answers),
     // with the neighbours from PointKdTree: pcl::search::KdTree's per-query set-up was most of
     // this step's time.

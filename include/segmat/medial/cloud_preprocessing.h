@@ -31,16 +31,19 @@ namespace segmat {
  *     stays; each outlier would be a surface sample of its own inside or around the shape —
  *     their input points still get the label of the nearest working point); a warning when the
  *     cloud lies so far from the origin that float coordinates are a grid at its scale;
- *  3. normals: the input's, normalised (default when it has them); or estimated: first, when
- *     the cloud is noisy (a point's median offset from the plane of its 8 nearest neighbours,
- *     as a Gaussian σ, above 10 % of the spacing; clean samples show 2–4 %), up to
- *     setSmoothingIterations() passes of *sided* quadratic smoothing — each point moves onto
- *     a height field fitted with weights on the residual (bandwidth 1.5 σ), so the two sides of
- *     a wall thinner than the neighbourhood stay apart instead of collapsing into one sheet;
- *     when step 2 thinned the cloud, to the input's points around it, several times as many
- *     over the same area —;
- *     then pcl::NormalEstimationOMP over k neighbours (the result does not depend on the thread
- *     count: every point's normal is computed alone), oriented by segmat::NormalOrientation.
+ *  3. smoothing: when the cloud is noisy (a point's median offset from the plane of its 8
+ *     nearest neighbours, as a Gaussian σ, above 10 % of the spacing; clean samples show
+ *     2–4 %), up to setSmoothingIterations() passes of *sided* quadratic smoothing — each point
+ *     moves onto a height field fitted with weights on the residual (bandwidth 1.5 σ), so the
+ *     two sides of a wall thinner than the neighbourhood stay apart instead of collapsing into
+ *     one sheet; when step 2 thinned the cloud, to the input's points around it, several times
+ *     as many over the same area. The test runs on every cloud, with or without normals;
+ *  4. normals: the input's, normalised (default when it has them), unless the cloud was found
+ *     noisy: then, as for a cloud without normals, pcl::NormalEstimationOMP over k neighbours
+ *     of the smoothed points (the result does not depend on the thread count: every point's
+ *     normal is computed alone), oriented by segmat::NormalOrientation. Smoothing carries
+ *     points that the noise moved across a thin wall onto its other side, where their own
+ *     normals point the wrong way.
  */
 class CloudPreprocessing
 {
@@ -119,7 +122,8 @@ public:
   }
 
   /** \brief Use the input's normals (true, default) or estimate them (false). Input normals
-   * are trusted to be oriented outward.
+   * are trusted to be oriented outward. A cloud found noisy has its normals estimated either
+   * way (step 4 above).
    */
   void
   setUseInputNormalsFlag(bool flag)
@@ -174,15 +178,16 @@ public:
     return input_to_working_;
   }
 
-  /** \brief True when the last compute() estimated the normals. */
+  /** \brief True when the last compute() estimated the normals: asked to, or the input's were
+   * unusable, or the cloud was found noisy. */
   bool
   getNormalsEstimated() const
   {
     return normals_estimated_;
   }
 
-  /** \brief Smoothing passes the last compute() applied: 0 for a clean cloud (or one whose
-   * normals were used), 1 or more when it found the cloud noisy. */
+  /** \brief Smoothing passes the last compute() applied: 0 for a clean cloud, 1 or more when
+   * it found the cloud noisy. */
   int
   getSmoothingPassesApplied() const
   {
@@ -190,8 +195,8 @@ public:
   }
 
   /** \brief The noise the last compute() estimated in the working cloud (Gaussian σ of the
-   * points' offsets from their local surface, in the cloud's units); 0 when the normals were
-   * used (nothing is smoothed then). */
+   * points' offsets from their local surface, in the cloud's units), with or without input
+   * normals. */
   double
   getEstimatedNoise() const
   {

@@ -137,6 +137,8 @@ public:
   }
 
   /** \brief Use the cloud's normals when PointT has them (default true); false estimates them.
+   * A cloud found noisy has its normals estimated either way, from the smoothed points
+   * (docs/noise.md, "Clouds with normals").
    */
   void
   setUseInputNormalsFlag(bool flag)
@@ -153,8 +155,8 @@ public:
   }
 
   /** \brief The noise the last segment() estimated on the cloud: the Gaussian σ of the working
-   * points' offsets from the PCA plane of their 8 nearest points, in the input's units (0 when
-   * the cloud's own normals were used: such a cloud is taken as it is). It reads low once the
+   * points' offsets from the PCA plane of their 8 nearest points, in the input's units, whether
+   * or not the cloud came with normals. It reads low once the
    * noise nears the point spacing (about half the true σ at σ = 0.5 % of the diagonal on 20 k
    * points; docs/noise.md, "Limits"). */
   double
@@ -164,7 +166,7 @@ public:
   }
 
   /** \brief Median nearest-neighbour distance of the working points of the last segment(), in
-   * the input's units (0 when the cloud's own normals were used). */
+   * the input's units. */
   double
   getEstimatedSpacing() const
   {
