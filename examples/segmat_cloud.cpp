@@ -112,8 +112,8 @@ run(int argc, char** argv)
   addCommonOptions(parser, common);
   parser.note("A noisy cloud needs no option: its noise is estimated and the points smoothed\n"
               "(docs/noise.md). --json prints parts, point_counts, seconds per stage, noise\n"
-              "{sigma, spacing, passes} (estimated, in the file's units; 0 when the file's\n"
-              "normals were used) and origin (what a cloud far from 0 was moved by; outputs\n"
+              "{sigma, spacing, passes} (estimated, in the file's units, with or without the\n"
+              "file's normals) and origin (what a cloud far from 0 was moved by; outputs\n"
               "are written back in the file's frame).");
 
   if (!parser.parse(argc, argv))

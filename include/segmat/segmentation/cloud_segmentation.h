@@ -183,7 +183,7 @@ public:
   }
 
   /** \brief Smoothing passes the last segment() applied to the working points: 0 for a cloud
-   * found clean (or one whose normals were used). */
+   * found clean, with or without normals. */
   int
   getDenoisingPasses() const
   {
