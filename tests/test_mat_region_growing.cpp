@@ -138,6 +138,12 @@ TEST(MatRegionGrowing, SettersKeepOldValueOnBadInput)
   EXPECT_EQ(g.getRadiusTolerance(), 0.0);
   g.setRadiusTolerance(0.25);
   EXPECT_EQ(g.getRadiusTolerance(), 0.25);
+  EXPECT_EQ(g.getTouchingTolerance(), 0.0);
+  g.setSurfaceSamples({Eigen::Vector3d::Zero()}, -0.1);
+  g.setSurfaceSamples({Eigen::Vector3d::Zero()}, NAN);
+  EXPECT_EQ(g.getTouchingTolerance(), 0.0);
+  g.setSurfaceSamples({Eigen::Vector3d::Zero()}, 0.01);
+  EXPECT_EQ(g.getTouchingTolerance(), 0.01);
   g.setGrowingThreshold(-1.0);
   g.setGrowingThreshold(NAN);
   g.setMinRegionFraction(1.5);

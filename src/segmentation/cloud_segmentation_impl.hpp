@@ -58,6 +58,7 @@ CloudSegmentation<PointT>::computeField()
   tags_ = StructureTags();
   stats_ = MesoSkeletonStatistics();
   working_remaining_sigma_ = 0.0;
+  working_touching_ = 0.0;
   working_.reset(new pcl::PointCloud<pcl::PointNormal>);
   input_to_working_.clear();
   // Every stage works on a copy in the normalised frame (centred, scaled by a power of two) and
@@ -101,6 +102,7 @@ CloudSegmentation<PointT>::computeField()
   }
   input_to_working_ = detail::inputToWorking(input_->size(), frame.indices, copy_to_working);
   working_remaining_sigma_ = stats_.remaining_sigma; // the grower's frame
+  working_touching_ = stats_.smoothing_passes > 0 ? stats_.noise_sigma : 0.0;
   // What the caller reads back is in the input's frame (the graph stays in the normalised one).
   detail::moveFromNormalizedFrame(frame, frame.indices, base, structured, *skeleton_, stats_);
   if (!base.empty())
@@ -176,6 +178,15 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
   std::vector<pcl::PointIndices> grown;
   // As for meshes: radius differences within the noise that smoothing left tell nothing.
   grower_.setRadiusTolerance(working_remaining_sigma_);
+  // Merging tells a noisy cloud's spikes from its parts by how its spheres touch the smoothed
+  // points, within the input's noise (MatRegionGrowing::setSurfaceSamples).
+  std::vector<Eigen::Vector3d> samples;
+  if (working_touching_ > 0.0) {
+    samples.reserve(working_->size());
+    for (const auto& p : working_->points)
+      samples.push_back(p.getVector3fMap().template cast<double>());
+  }
+  grower_.setSurfaceSamples(std::move(samples), working_touching_);
   if (!detail::segmentWorkingCloud(graph_, tags_, *working_, k_, visibility_, grower_, transfer_,
                                    working_labels, label_parts, grown, stage_seconds_)) {
     stage_seconds_.clear();

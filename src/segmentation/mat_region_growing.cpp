@@ -6,6 +6,7 @@
 #include "../common/checked_setter.h"
 #include <segmat/segmentation/mat_region_growing.h>
 #include "patch_merging.h"
+#include "spanning_spheres.h"
 
 #include "../common/point_kd_tree.h"
 
@@ -261,20 +262,29 @@ graphEdgePairs(const MatGraph& g, const std::vector<Patch>& patches)
 
 /** Merging rounds (the authors' `MergeIterations`). EMD_max is taken once, over all pairs
  * of the patches entering round 1, as in the reference. A merged patch takes the place of its
- * lowest member and concatenates the members' nodes in patch order.
+ * lowest member and concatenates the members' nodes in patch order. A patch's histogram counts
+ * its spheres flagged in \a in_histogram (all of them when it has none flagged, or when the
+ * flags are empty).
  */
 void
 mergePatches(const MatGraph& g, const RadiusBinning& binning, int rounds,
              const SegmentVisibility& visibility, unsigned seed,
-             std::vector<Patch>& patches)
+             const std::vector<char>& in_histogram, std::vector<Patch>& patches)
 {
   double emd_max = 0.0;
   for (int round = 0; round < rounds && patches.size() > 1; ++round) {
     std::vector<std::vector<int>> spheres;
     std::vector<std::vector<double>> hist;
+    std::vector<int> counted;
     for (const Patch& p : patches) {
       spheres.push_back(spheresOf(g, p.dense));
-      hist.push_back(radiusHistogram(spheres.back(), g.radii(), binning));
+      counted.clear();
+      if (!in_histogram.empty())
+        for (const int s : spheres.back())
+          if (in_histogram[s])
+            counted.push_back(s);
+      hist.push_back(
+          radiusHistogram(counted.empty() ? spheres.back() : counted, g.radii(), binning));
     }
     if (round == 0)
       emd_max = maxPairwiseEmd(hist, binning.spacing);
@@ -305,6 +315,7 @@ MatRegionGrowing::MatRegionGrowing()
 , max_seed_radius_ratio_(3.0)
 , max_bend_angle_(60.0)
 , radius_tolerance_(0.0)
+, touching_tolerance_(0.0)
 , seed_(0x5e6a7u)
 {}
 
@@ -360,6 +371,19 @@ MatRegionGrowing::setRadiusTolerance(double length)
 {
   detail::assignChecked(radius_tolerance_, length, length >= 0.0 && std::isfinite(length),
                         "MatRegionGrowing::setRadiusTolerance", "finite and >= 0");
+}
+
+void
+MatRegionGrowing::setSurfaceSamples(std::vector<Eigen::Vector3d> samples, double tolerance)
+{
+  if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) {
+    PCL_WARN("[segmat::MatRegionGrowing::setSurfaceSamples] The touching tolerance must be "
+             "finite and >= 0; got %g, kept %g.\n",
+             tolerance, touching_tolerance_);
+    return;
+  }
+  surface_samples_ = std::move(samples);
+  touching_tolerance_ = tolerance;
 }
 
 void
@@ -554,7 +578,14 @@ MatRegionGrowing::extract(std::vector<pcl::PointIndices>& parts)
   // parts and is split.
   splitLargeLeftovers(g, tiny, patches, std::max<std::size_t>(2, g.numNodes() / 20));
   absorbTinyPatches(g, tiny, binning, index, patches);
-  mergePatches(g, binning, merge_rounds_, visibility_, seed_, patches);
+  // On a noisy surface each bump sends a spike into the shape: spheres of every radius up to
+  // the part's, touching the bump's flanks only. They fill every part's histogram alike, and
+  // parts of different thickness compare as alike (docs/noise.md, "Spikes in the merging").
+  std::vector<char> in_histogram;
+  if (touching_tolerance_ > 0.0)
+    in_histogram = detail::spheresSpanningRightAngle(g.centers(), g.radii(), surface_samples_,
+                                                     touching_tolerance_);
+  mergePatches(g, binning, merge_rounds_, visibility_, seed_, in_histogram, patches);
 
   // Outputs, in patch order.
   node_labels_.assign(n, -1);

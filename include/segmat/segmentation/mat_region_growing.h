@@ -210,6 +210,31 @@ public:
     return radius_tolerance_;
   }
 
+  /** \brief Set the surface samples that the medial spheres touch, and how far outside a
+   * sphere a sample still touches it. With a tolerance > 0, merging compares parts by the radii
+   * of their spheres whose touching samples span at least a right angle as seen from the
+   * centre (the separation angle of the θ-simplified medial axis, Foskey et al. 2003): a
+   * tube's axis spheres touch a ring, a box edge's sheet spheres two faces at 90°. A bump of
+   * a noisy surface sends a spike into the shape, spheres of every radius up to the part's
+   * that touch the bump's two flanks a small angle apart; counted in SEG-MAT's radius
+   * histograms (§4.4) they make every part's histogram alike, and two parts of different
+   * thickness pass the EMD test. A part with no spanning sphere is compared by all of its
+   * spheres. CloudSegmentation sets the smoothed points of a noisy cloud with the input's
+   * noise σ̂ as the tolerance; 0 (the default) is the paper's histogram of all spheres.
+   * \param[in] samples surface points, in the graph's frame
+   * \param[in] tolerance a finite length >= 0, in the graph's units; other values are rejected
+   * with a warning
+   */
+  void
+  setSurfaceSamples(std::vector<Eigen::Vector3d> samples, double tolerance);
+  /** \brief How far outside a sphere a surface sample still touches it (0: merging counts all
+   * spheres). */
+  double
+  getTouchingTolerance() const
+  {
+    return touching_tolerance_;
+  }
+
   /** \brief Set the visibility test used when merging. When unset (the default) the visibility
    * gate is skipped: parts merge on adjacency and histogram similarity alone.
    */
@@ -291,6 +316,8 @@ private:
   double max_seed_radius_ratio_;
   double max_bend_angle_;
   double radius_tolerance_;
+  double touching_tolerance_;
+  std::vector<Eigen::Vector3d> surface_samples_;
   SegmentVisibility visibility_;
   unsigned seed_;
 
