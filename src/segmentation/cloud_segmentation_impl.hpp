@@ -102,7 +102,10 @@ CloudSegmentation<PointT>::computeField()
   }
   input_to_working_ = detail::inputToWorking(input_->size(), frame.indices, copy_to_working);
   working_remaining_sigma_ = stats_.remaining_sigma; // the grower's frame
-  working_touching_ = stats_.smoothing_passes > 0 ? stats_.noise_sigma : 0.0;
+  // Measured on the medial mesh only (docs/noise.md, "Spikes in the merging").
+  working_touching_ = medial_axis_ == CloudMedialAxis::MedialMesh && stats_.smoothing_passes > 0
+                          ? stats_.noise_sigma
+                          : 0.0;
   // What the caller reads back is in the input's frame (the graph stays in the normalised one).
   detail::moveFromNormalizedFrame(frame, frame.indices, base, structured, *skeleton_, stats_);
   if (!base.empty())

@@ -366,7 +366,7 @@ private:
   bool visibility_ = true;
   MesoSkeletonStatistics stats_; ///< the last segment()'s preprocessing
   double working_remaining_sigma_ = 0.0; ///< stats_.remaining_sigma in the normalised frame
-  double working_touching_ = 0.0; ///< a smoothed cloud's input σ̂ in that frame (clean: 0)
+  double working_touching_ = 0.0; ///< a smoothed cloud's input σ̂ in that frame (else 0)
 
   // The field: preprocessing, medial axis and graph, kept while only grower and transfer
   // parameters change (see segment()).

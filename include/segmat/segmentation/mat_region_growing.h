@@ -220,7 +220,8 @@ public:
    * histograms (§4.4) they make every part's histogram alike, and two parts of different
    * thickness pass the EMD test. A part with no spanning sphere is compared by all of its
    * spheres. CloudSegmentation sets the smoothed points of a noisy cloud with the input's
-   * noise σ̂ as the tolerance; 0 (the default) is the paper's histogram of all spheres.
+   * noise σ̂ as the tolerance (medial mesh only); 0 (the default) is the paper's histogram of
+   * all spheres.
    * \param[in] samples surface points, in the graph's frame
    * \param[in] tolerance a finite length >= 0, in the graph's units; other values are rejected
    * with a warning
