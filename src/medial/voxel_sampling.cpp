@@ -119,7 +119,8 @@ voxelRepresentatives(const std::vector<Eigen::Vector3f>& points, double voxel_si
     if (pick == VoxelPick::Jittered)
       // Three draws of the splitmix stream that the cell's key seeds, each in [0, 1).
       for (int a = 0; a < 3; ++a) {
-        const std::uint64_t draw = detail::splitmix64(key + std::uint64_t(a + 1) * detail::kSplitmixIncrement);
+        const std::uint64_t draw =
+            detail::splitmix64(key + std::uint64_t(a + 1) * detail::kSplitmixIncrement);
         offset[a] = double(draw >> 11) * 0x1.0p-53;
       }
     const Eigen::Vector3d target = grid.origin + grid.size * (c.cast<double>() + offset).matrix();

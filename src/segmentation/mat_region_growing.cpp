@@ -376,14 +376,10 @@ MatRegionGrowing::setRadiusTolerance(double length)
 void
 MatRegionGrowing::setSurfaceSamples(std::vector<Eigen::Vector3d> samples, double tolerance)
 {
-  if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) {
-    PCL_WARN("[segmat::MatRegionGrowing::setSurfaceSamples] The touching tolerance must be "
-             "finite and >= 0; got %g, kept %g.\n",
-             tolerance, touching_tolerance_);
-    return;
-  }
-  surface_samples_ = std::move(samples);
-  touching_tolerance_ = tolerance;
+  if (detail::assignChecked(touching_tolerance_, tolerance,
+                            tolerance >= 0.0 && std::isfinite(tolerance),
+                            "MatRegionGrowing::setSurfaceSamples", "finite and >= 0"))
+    surface_samples_ = std::move(samples);
 }
 
 void
