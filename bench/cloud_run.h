@@ -34,6 +34,7 @@ struct CloudRun
 {
   std::vector<int> labels; ///< one per point (all 0 when the segmentation failed)
   int parts = 0;           ///< 0 when it failed
+  int structured_spheres = 0; ///< of the structured MAT (0 for the meso-skeleton)
   double seconds = 0.0;    ///< wall time of segment()
   StageTimings stages;     ///< CloudSegmentation::getStageSeconds()
 };
@@ -70,6 +71,8 @@ segmentSampledCloud(const test::SampledCloud& cloud, const CloudRunSettings& set
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.parts = ok ? int(parts.size()) : 0;
   run.stages = seg.getStageSeconds();
+  run.structured_spheres =
+      seg.getStructuredMat() ? int(seg.getStructuredMat()->numVertices()) : 0;
   run.labels = ok ? seg.getLabels() : std::vector<int>(cloud.size(), 0);
   return run;
 }
