@@ -128,6 +128,32 @@ TEST(PatchMerging, VisibilityRatioCountsEveryThirdSphere)
   EXPECT_FALSE(patchesSeeEachOther({}, b, c, r, wall, 0.5, 1));
 }
 
+TEST(PatchMerging, LargePatchesSendAtMost128Points)
+{
+  // Every segment is visible and the ratio is 1, so every pair of points is tested once: the
+  // calls count the points. 300 spheres: every 3rd, 100 points; 384: 128; 385: every 4th, 97;
+  // 1000: every 8th, 125.
+  for (const auto& [spheres, points] : {std::pair<int, int>{300, 100}, {384, 128}, {385, 97},
+                                        {1000, 125}}) {
+    std::vector<Eigen::Vector3d> c;
+    std::vector<int> a, b;
+    for (int i = 0; i < spheres; ++i) {
+      a.push_back(int(c.size()));
+      c.emplace_back(i, 0.0, 0.0);
+      b.push_back(int(c.size()));
+      c.emplace_back(i, 1.0, 0.0);
+    }
+    const std::vector<double> r(c.size(), 0.0);
+    long calls = 0;
+    const SegmentVisibility open = [&calls](const Eigen::Vector3d&, const Eigen::Vector3d&) {
+      ++calls;
+      return true;
+    };
+    EXPECT_TRUE(patchesSeeEachOther(a, b, c, r, open, 1.0, 5));
+    EXPECT_EQ(calls, long(points) * points) << spheres << " spheres a patch";
+  }
+}
+
 TEST(PatchMerging, MergeRoundJoinsSimilarAdjacentVisiblePatches)
 {
   // P0 and P1 share sphere 2 and have the same radii; P2 shares sphere 4 with P1 but is fat;

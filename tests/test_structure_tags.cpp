@@ -200,3 +200,27 @@ TEST(StructureTags, BranchSphereRadiusDoesNotMakeALineBulky)
   EXPECT_DOUBLE_EQ(tags.tag_ratio[1], 4.0);
   EXPECT_EQ(tags.node_tag, (std::vector<int>{1, 0}));
 }
+
+TEST(StructureTags, ANodeHalfwayBetweenTwoThinPartsTakesTheFirst)
+{
+  // Two parallel thin lines (L = 8, r = 0.5, ρ = 16), 2 apart; the probe at (4, 1, 0) is exactly
+  // 1 from the sphere centres (4, 0, 0) and (4, 2, 0), both densified points. The tie goes to
+  // the thin part found first (the one whose edges come first), whichever of the two it is.
+  for (const bool lower_first : {true, false}) {
+    std::vector<Eigen::Vector3d> c;
+    for (const double y : lower_first ? std::vector<double>{0, 2} : std::vector<double>{2, 0})
+      for (int k = 0; k <= 4; ++k)
+        c.emplace_back(2.0 * k, y, 0.0);
+    const std::vector<double> r(c.size(), 0.5);
+    const MedialMesh structured(c, r,
+                                {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {5, 6}, {6, 7}, {7, 8}, {8, 9}},
+                                {});
+    const StructureTags tags =
+        computeStructureTags(structured, probes({{4, 1, 0}, {4, 0.9, 0}, {4, 1.1, 0}}));
+    ASSERT_EQ(tags.numThinParts(), 2);
+    EXPECT_EQ(tags.node_tag[0], 1) << (lower_first ? "lower" : "upper") << " line first";
+    // Off the middle, the nearer line wins.
+    EXPECT_EQ(tags.node_tag[1], lower_first ? 1 : 2);
+    EXPECT_EQ(tags.node_tag[2], lower_first ? 2 : 1);
+  }
+}
