@@ -128,13 +128,13 @@ TEST(PatchMerging, VisibilityRatioCountsEveryThirdSphere)
   EXPECT_FALSE(patchesSeeEachOther({}, b, c, r, wall, 0.5, 1));
 }
 
-TEST(PatchMerging, LargePatchesSendAtMost128Points)
+TEST(PatchMerging, LargePatchesSendAtMost256Points)
 {
   // Every segment is visible and the ratio is 1, so every pair of points is tested once: the
-  // calls count the points. 300 spheres: every 3rd, 100 points; 384: 128; 385: every 4th, 97;
-  // 1000: every 8th, 125.
-  for (const auto& [spheres, points] : {std::pair<int, int>{300, 100}, {384, 128}, {385, 97},
-                                        {1000, 125}}) {
+  // calls count the points. 300 spheres: every 3rd, 100 points; 768: 256; 769: every 4th, 193;
+  // 2000: every 8th, 250.
+  for (const auto& [spheres, points] : {std::pair<int, int>{300, 100}, {768, 256}, {769, 193},
+                                        {2000, 250}}) {
     std::vector<Eigen::Vector3d> c;
     std::vector<int> a, b;
     for (int i = 0; i < spheres; ++i) {
