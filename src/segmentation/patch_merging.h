@@ -73,10 +73,10 @@ randomPointInBall(std::mt19937& engine, const Eigen::Vector3d& center, double ra
  * Every 3rd sphere of each patch contributes one random point inside it, or every k-th, with
  * the smallest k that leaves at most 256 points: a patch of more than 768 spheres then estimates
  * the visible fraction about as finely as one of 768, and two large patches do not cost a
- * quarter of a million segment tests.
- * The patches see each other when at least ratio · (all point pairs) segments are visible (a
- * degenerate segment is visible). Fix of the reference: points are uniform in the ball (it sampled one octant of
- * directions with a non-uniform radius) and the engine is seeded (it used unseeded rand()).
+ * quarter of a million segment tests. The patches see each other when at least
+ * ratio · (all point pairs) segments are visible (a degenerate segment is visible). Fix of the
+ * reference: points are uniform in the ball (it sampled one octant of directions with a
+ * non-uniform radius) and the engine is seeded (it used unseeded rand()).
  * \param[in] seed seeds the sampling; the result is a function of all arguments
  */
 bool
