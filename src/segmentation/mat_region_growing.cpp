@@ -8,11 +8,9 @@
 #include "patch_merging.h"
 #include "spanning_spheres.h"
 
-#include "../common/point_kd_tree.h"
+#include "../common/exact_point_index.h"
 
 #include <pcl/console/print.h>
-#include <pcl/point_cloud.h>
-#include <pcl/point_types.h>
 
 #include <algorithm>
 #include <cmath>
@@ -21,55 +19,6 @@
 
 namespace segmat {
 namespace {
-
-/** Radius queries over the sphere centres, exact in double (the kd-tree works in float, so it is
- * asked with a small margin and its answers are filtered).
- */
-class SphereIndex
-{
-public:
-  SphereIndex(const std::vector<Eigen::Vector3d>& centers) : centers_(centers)
-  {
-    auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-    cloud->reserve(centers.size());
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
-    Eigen::Vector3d hi = -lo;
-    for (const Eigen::Vector3d& c : centers) {
-      cloud->push_back(pcl::PointXYZ(static_cast<float>(c.x()), static_cast<float>(c.y()),
-                                     static_cast<float>(c.z())));
-      lo = lo.cwiseMin(c);
-      hi = hi.cwiseMax(c);
-    }
-    // Non-finite centres are left out of the tree (PCL maps the indices back).
-    cloud->is_dense = lo.allFinite() && hi.allFinite();
-    margin_ = cloud->is_dense && !centers.empty() ? 1e-5 * (hi - lo).norm() + 1e-12 : 1e-6;
-    tree_.setSortedResults(false);
-    tree_.setInputCloud(cloud);
-  }
-
-  /** Spheres whose centre lies strictly closer than \a radius to \a q, in no particular order
-   * (callers sort or de-duplicate what they keep). */
-  void
-  within(const Eigen::Vector3d& q, double radius, std::vector<int>& out)
-  {
-    out.clear();
-    if (!(radius > 0.0) || !std::isfinite(radius) || !q.allFinite() || centers_.empty())
-      return; // a non-finite sphere contains nothing (and PCL asserts on NaN queries)
-    const pcl::PointXYZ p(static_cast<float>(q.x()), static_cast<float>(q.y()),
-                          static_cast<float>(q.z()));
-    tree_.radiusSearch(p, radius * (1.0 + 1e-6) + margin_, indices_, sq_dist_);
-    for (int s : indices_)
-      if ((centers_[s] - q).norm() < radius)
-        out.push_back(s);
-  }
-
-private:
-  const std::vector<Eigen::Vector3d>& centers_;
-  detail::PointKdTree tree_;
-  double margin_ = 0.0;
-  std::vector<int> indices_;
-  std::vector<float> sq_dist_;
-};
 
 /** A part while it is built: grown (coarse) nodes and all its nodes (dense). */
 struct Patch
@@ -102,7 +51,7 @@ spheresOf(const MatGraph& g, const std::vector<int>& nodes)
  */
 void
 absorbTinyPatches(const MatGraph& g, const std::vector<std::vector<int>>& tiny,
-                  const RadiusBinning& binning, SphereIndex& index, std::vector<Patch>& patches)
+                  const RadiusBinning& binning, const detail::ExactPointIndex& index, std::vector<Patch>& patches)
 {
   if (tiny.empty() || patches.empty())
     return;
@@ -469,7 +418,7 @@ MatRegionGrowing::extract(std::vector<pcl::PointIndices>& parts)
   for (int i = 0; i < n; ++i)
     for (int k = 0; k < g.node(i).size(); ++k)
       sphere_nodes[g.node(i).v[k]].push_back(i);
-  SphereIndex index(g.centers());
+  const detail::ExactPointIndex index(g.centers());
 
   // Tube directions of the nodes (zero: not on a structured line); see setMaxBendAngle().
   static const std::vector<Eigen::Vector3d> no_axes;

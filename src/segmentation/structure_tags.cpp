@@ -6,10 +6,7 @@
 #include <segmat/medial/mat_graph.h>
 #include <segmat/segmentation/structure_tags.h>
 
-#include "../common/point_kd_tree.h"
-
-#include <pcl/point_cloud.h>
-#include <pcl/point_types.h>
+#include "../common/exact_point_index.h"
 
 #include <Eigen/Geometry>
 
@@ -237,49 +234,13 @@ computeStructureTags(const MedialMesh& structured, const MatGraph& base)
   tags.node_axis.assign(base.numNodes(), Eigen::Vector3d::Zero());
 
   // The densified points run to tens of thousands on a structured MAT of many sheet triangles
-  // (a noisy cup's wall), so the search goes through a kd-tree. The tree works in float: its
-  // nearest point bounds the distance, and the points within that bound (plus a rounding margin)
-  // are compared in double, ties to the lowest index, as a scan in point order would.
-  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  cloud->reserve(points.size());
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max()), hi = -lo;
-  for (const Eigen::Vector3d& p : points) {
-    cloud->push_back(pcl::PointXYZ(static_cast<float>(p.x()), static_cast<float>(p.y()),
-                                   static_cast<float>(p.z())));
-    if (p.allFinite()) {
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
-    }
-  }
-  cloud->is_dense = false; // the tree leaves non-finite points out
-  detail::PointKdTree tree;
-  tree.setInputCloud(cloud);
-  // Float rounding moves a point by up to ~6e-8 of its largest coordinate.
-  const double margin = hi.allFinite() && lo.allFinite()
-                            ? 1e-5 * (hi - lo).norm() + 1e-6 * std::max(lo.cwiseAbs().maxCoeff(),
-                                                                        hi.cwiseAbs().maxCoeff())
-                            : 0.0;
-  pcl::Indices found;
-  std::vector<float> sq_distances;
+  // (a noisy cup's wall), so the search goes through a kd-tree, exact in double with ties to the
+  // lowest index, as a scan in point order would be.
+  const detail::ExactPointIndex index(points);
   for (std::size_t i = 0; i < base.numNodes(); ++i) {
-    const Eigen::Vector3d& q = base.node(static_cast<int>(i)).centroid;
-    std::size_t nearest = 0; // a non-finite centroid is nearest to nothing: the first point
-    if (q.allFinite()) {
-      const pcl::PointXYZ query(static_cast<float>(q.x()), static_cast<float>(q.y()),
-                                static_cast<float>(q.z()));
-      if (tree.nearestKSearch(query, 1, found, sq_distances) > 0) {
-        const double bound = std::sqrt(double(sq_distances[0])) * (1.0 + 1e-5) + margin + 1e-12;
-        tree.radiusSearch(query, bound, found, sq_distances);
-        double best = std::numeric_limits<double>::infinity();
-        for (const int p : found) {
-          const double d = (points[std::size_t(p)] - q).squaredNorm();
-          if (d < best || (d == best && std::size_t(p) < nearest)) {
-            best = d;
-            nearest = std::size_t(p);
-          }
-        }
-      }
-    }
+    // A non-finite centroid is nearest to nothing: it takes the first point.
+    const std::size_t nearest =
+        std::size_t(std::max(0, index.nearest(base.node(static_cast<int>(i)).centroid)));
     tags.node_tag[i] = point_tag[nearest];
     // Only bulky lines carry a direction: a thin part already has its own tag and threshold,
     // and humans keep a long curling limb (a tentacle) whole.
