@@ -159,3 +159,46 @@ TEST(CloudMedialMeshEstimation, BadInputFailsCleanly)
   estimation.setAreaKSearch(0); // refused, kept
   EXPECT_EQ(estimation.getAreaKSearch(), 8);
 }
+
+TEST(CloudMedialMeshEstimation, ComputeIsItsTwoHalvesAndQmatKeepsTheComponents)
+{
+  // Three solids apart: two spheres and a torus. The segmentation decides between two
+  // orientations of a noisy cloud by the components of their initial MATs and simplifies only
+  // the one it keeps, which is right because Q-MAT drops isolated spheres and never joins or
+  // splits the other components.
+  SampledCloud cloud = sphereCloud(5000, 3);
+  const SampledCloud second = sphereCloud(5000, 4), torus = torusCloud(8000, 5);
+  for (std::size_t i = 0; i < second.size(); ++i) {
+    cloud.points.push_back(second.points[i] + Eigen::Vector3f(5.0f, 0.0f, 0.0f));
+    cloud.normals.push_back(second.normals[i]);
+  }
+  for (std::size_t i = 0; i < torus.size(); ++i) {
+    cloud.points.push_back(torus.points[i] + Eigen::Vector3f(0.0f, 6.0f, 0.0f));
+    cloud.normals.push_back(torus.normals[i]);
+  }
+  CloudMedialMeshEstimation estimation;
+  estimation.setInputCloud(cloud.toPointNormal());
+  MedialMesh base, structured, halves_base, halves_structured;
+  EXPECT_FALSE(estimation.simplify(halves_base, halves_structured)); // no initial MAT yet
+  ASSERT_TRUE(estimation.compute(base, structured));
+  ASSERT_TRUE(estimation.computeInitialMat());
+  const MedialMesh& initial = estimation.getMedialMeshEstimation().getInitialMat();
+  std::size_t isolated = 0;
+  for (std::size_t v = 0; v < initial.numVertices(); ++v)
+    isolated += initial.vertexEdges(int(v)).empty();
+  const std::size_t components = initial.numConnectedComponents() - isolated;
+  EXPECT_GE(components, 3u);
+  ASSERT_TRUE(estimation.simplify(halves_base, halves_structured));
+  EXPECT_EQ(halves_base.numConnectedComponents(), components);
+  EXPECT_EQ(halves_structured.numConnectedComponents(), components);
+  ASSERT_EQ(halves_base.numVertices(), base.numVertices());
+  for (std::size_t v = 0; v < base.numVertices(); ++v) {
+    ASSERT_EQ(halves_base.centers()[v], base.centers()[v]);
+    ASSERT_EQ(halves_base.radii()[v], base.radii()[v]);
+  }
+  EXPECT_EQ(halves_base.numTriangles(), base.numTriangles());
+  EXPECT_EQ(halves_structured.numVertices(), structured.numVertices());
+  MedialMesh again, again_structured;
+  EXPECT_FALSE(estimation.simplify(again, again_structured)); // once per initial MAT
+  EXPECT_TRUE(again.empty());
+}

@@ -36,6 +36,12 @@ CloudMedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
 {
   base = MedialMesh();
   structured = MedialMesh();
+  return computeInitialMat() && simplify(base, structured);
+}
+
+bool
+CloudMedialMeshEstimation::computeInitialMat()
+{
   splats_ = std::make_shared<TriangleMesh>();
   if (!cloud_) {
     PCL_ERROR("[segmat::CloudMedialMeshEstimation::compute] No input cloud.\n");
@@ -84,10 +90,19 @@ CloudMedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
   // The normals let the Voronoi step skip the winding number where they settle the question.
   estimation_.setSurfaceSamples(points, normals);
   estimation_.setWindingNumber(winding_number);
-  const bool ok = estimation_.compute(base, structured);
-  // Do not keep the cloud's data alive in the member.
+  const bool ok = estimation_.computeInitialMat();
+  // Do not keep the cloud's data alive in the member (simplify() needs only the splats).
   estimation_.setSurfaceSamples(nullptr);
   estimation_.setWindingNumber(nullptr);
+  if (!ok)
+    estimation_.setInputMesh(nullptr);
+  return ok;
+}
+
+bool
+CloudMedialMeshEstimation::simplify(MedialMesh& base, MedialMesh& structured)
+{
+  const bool ok = estimation_.simplify(base, structured);
   estimation_.setInputMesh(nullptr);
   return ok;
 }

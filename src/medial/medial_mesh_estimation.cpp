@@ -18,11 +18,18 @@ namespace segmat {
 bool
 MedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
 {
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
   base = MedialMesh();
   structured = MedialMesh();
+  return computeInitialMat() && simplify(base, structured);
+}
+
+bool
+MedialMeshEstimation::computeInitialMat()
+{
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
   initial_ = std::make_shared<MedialMesh>();
+  initial_winding_number_.reset();
   statistics_ = MedialMeshEstimationStatistics();
   if (!mesh_ || mesh_->empty()) {
     PCL_ERROR("[segmat::MedialMeshEstimation::compute] no input mesh (or it has no faces)\n");
@@ -42,8 +49,6 @@ MedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
   voronoi_.setWindingNumber(nullptr); // voronoi_ is a member: do not keep the hierarchy alive
   statistics_.voronoi = voronoi_.getStatistics();
   statistics_.initial_spheres = initial_->numVertices();
-  const auto after_voronoi = Clock::now();
-  statistics_.seconds_initial = std::chrono::duration<double>(after_voronoi - start).count();
   if (!voronoi_ok)
     return false; // VoronoiMat said why
   if (initial_->numEdges() == 0) {
@@ -52,14 +57,31 @@ MedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
               initial_->numVertices());
     return false;
   }
-
   statistics_.filled_holes = std::size_t(detail::fillCoveredHoles(*initial_));
+  initial_winding_number_ = std::move(winding_number);
+  statistics_.seconds_initial = std::chrono::duration<double>(Clock::now() - start).count();
+  statistics_.seconds_total = statistics_.seconds_initial;
+  return true;
+}
+
+bool
+MedialMeshEstimation::simplify(MedialMesh& base, MedialMesh& structured)
+{
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  base = MedialMesh();
+  structured = MedialMesh();
+  if (!initial_winding_number_ || !mesh_) {
+    PCL_ERROR("[segmat::MedialMeshEstimation::simplify] no initial MAT: call computeInitialMat() "
+              "first.\n");
+    return false;
+  }
   QmatSimplification qmat;
   qmat.setInputMat(initial_);
   if (keep_centres_inside_)
   {
     qmat.setInputSurface(mesh_); // normalisation by its diagonal; merged centres stay inside
-    qmat.setWindingNumber(winding_number);
+    qmat.setWindingNumber(initial_winding_number_);
   }
   else
     qmat.setNormalisationScale(mesh_->boundingBoxDiagonal()); // Q-MAT's normalisation
@@ -67,9 +89,9 @@ MedialMeshEstimation::compute(MedialMesh& base, MedialMesh& structured)
   qmat.setStructuredTarget(simplification_structured_target_);
   qmat.setNumberOfThreads(voronoi_.getNumberOfThreads());
   const bool ok = qmat.compute(base, structured);
-  const auto end = Clock::now();
-  statistics_.seconds_simplification = std::chrono::duration<double>(end - after_voronoi).count();
-  statistics_.seconds_total = std::chrono::duration<double>(end - start).count();
+  initial_winding_number_.reset();
+  statistics_.seconds_simplification = std::chrono::duration<double>(Clock::now() - start).count();
+  statistics_.seconds_total = statistics_.seconds_initial + statistics_.seconds_simplification;
   statistics_.base_spheres = base.numVertices();
   statistics_.structured_spheres = structured.numVertices();
   return ok;

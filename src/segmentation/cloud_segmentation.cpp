@@ -23,19 +23,16 @@
 namespace segmat {
 namespace detail {
 namespace {
-/// Adds each stage of \a more to the stage of the same name in \a total, appending new ones.
-void
-addStageSeconds(const StageTimings& more,
-                StageTimings& total)
+
+/// The components that Q-MAT leaves of \a mat: it drops isolated spheres and never joins or
+/// splits the others.
+std::size_t
+componentsAfterQmat(const MedialMesh& mat)
 {
-  for (const auto& stage : more) {
-    auto mine = std::find_if(total.begin(), total.end(),
-                             [&](const auto& t) { return t.name == stage.name; });
-    if (mine == total.end())
-      total.push_back(stage);
-    else
-      mine->seconds += stage.seconds;
-  }
+  std::size_t isolated = 0;
+  for (std::size_t v = 0; v < mat.numVertices(); ++v)
+    isolated += mat.vertexEdges(int(v)).empty();
+  return mat.numConnectedComponents() - isolated;
 }
 
 } // namespace
@@ -55,14 +52,46 @@ medialPointGraph(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton, int k, 
 }
 
 bool
-medialMeshGraph(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& working,
-                CloudMedialMeshEstimation& estimation, MedialMesh& base, MedialMesh& structured,
-                MatGraph::Ptr& graph, StructureTags& tags,
+medialMeshGraph(pcl::PointCloud<pcl::PointNormal>::Ptr& working, bool retry_fragmented,
+                int orientation_k, CloudMedialMeshEstimation& estimation, MedialMesh& base,
+                MedialMesh& structured, MatGraph::Ptr& graph, StructureTags& tags,
                 StageTimings& stage_seconds)
 {
   auto start = std::chrono::steady_clock::now();
   estimation.setInputCloud(working);
-  const bool ok = estimation.compute(base, structured);
+  if (!estimation.computeInitialMat()) {
+    estimation.setInputCloud(nullptr);
+    return false;
+  }
+  // A solid's medial axis is connected; clean clouds leave a few stray spheres (no clean
+  // psb-dev cloud has more than 8 components), a plate whose normals flipped in patches leaves
+  // dozens (noisy PSB chair 101: 69). Noise on a plate thinner than the orientation
+  // neighbourhood flips patches of estimated normals, and the inside test then cuts the
+  // plate's medial sheet to pieces.
+  constexpr std::size_t kFragmented = 8;
+  const std::size_t components =
+      componentsAfterQmat(estimation.getMedialMeshEstimation().getInitialMat());
+  CloudMedialMeshEstimation mirrored_estimation; // replaced by a copy when needed
+  CloudMedialMeshEstimation* kept = &estimation;
+  if (retry_fragmented && components > kFragmented) {
+    pcl::PointCloud<pcl::PointNormal>::Ptr mirrored(
+        new pcl::PointCloud<pcl::PointNormal>(*working));
+    NormalOrientation orientation;
+    orientation.setKSearch(orientation_k);
+    orientation.setMirrorRelationFlag(true);
+    mirrored_estimation = estimation; // the same settings; its own initial MAT below
+    mirrored_estimation.setInputCloud(mirrored);
+    // Only a clearly less fragmented axis replaces the first: near-ties swap one noisy answer
+    // for another (noisy octopus 126: 85 → 84 components, and a worse score).
+    if (orientation.orient(*mirrored) && mirrored_estimation.computeInitialMat() &&
+        4 * componentsAfterQmat(mirrored_estimation.getMedialMeshEstimation().getInitialMat()) <=
+            3 * components) {
+      kept = &mirrored_estimation;
+      working = mirrored;
+    }
+    mirrored_estimation.setInputCloud(nullptr);
+  }
+  const bool ok = kept->simplify(base, structured);
   estimation.setInputCloud(nullptr);
   if (!ok || base.empty())
     return false;
@@ -79,48 +108,6 @@ medialMeshGraph(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& working,
   now = std::chrono::steady_clock::now();
   stage_seconds.emplace_back("graph", std::chrono::duration<double>(now - start).count());
   return true;
-}
-
-bool
-retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working, int orientation_k,
-                                 CloudMedialMeshEstimation& estimation, MedialMesh& base,
-                                 MedialMesh& structured, MatGraph::Ptr& graph, StructureTags& tags,
-                                 StageTimings& stage_seconds)
-{
-  // A solid's medial axis is connected; clean clouds leave a few stray spheres (no clean
-  // psb-dev cloud has more than 8 components), a plate whose normals flipped in patches leaves
-  // dozens (noisy PSB chair 101: 69).
-  constexpr std::size_t kFragmented = 8;
-  const std::size_t components = base.numConnectedComponents();
-  if (components <= kFragmented)
-    return false;
-  pcl::PointCloud<pcl::PointNormal>::Ptr mirrored(new pcl::PointCloud<pcl::PointNormal>(*working));
-  NormalOrientation orientation;
-  orientation.setKSearch(orientation_k);
-  orientation.setMirrorRelationFlag(true);
-  MedialMesh other_base, other_structured;
-  MatGraph::Ptr other_graph;
-  StructureTags other_tags;
-  StageTimings other_seconds;
-  const auto start = std::chrono::steady_clock::now();
-  bool ok = orientation.orient(*mirrored);
-  // The re-orientation counts as medial time (the first orientation is preprocessing's).
-  other_seconds.emplace_back(
-      "medial", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  ok = ok && medialMeshGraph(mirrored, estimation, other_base, other_structured, other_graph,
-                             other_tags, other_seconds);
-  // Only a clearly less fragmented axis replaces the first: near-ties swap one noisy answer for
-  // another (noisy octopus 126: 85 → 84 components, and a worse score).
-  const bool keep = ok && 4 * other_base.numConnectedComponents() <= 3 * components;
-  if (keep) {
-    working = mirrored;
-    base = std::move(other_base);
-    structured = std::move(other_structured);
-    graph = other_graph;
-    tags = std::move(other_tags);
-  }
-  addStageSeconds(other_seconds, stage_seconds);
-  return keep;
 }
 
 bool

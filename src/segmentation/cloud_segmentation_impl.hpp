@@ -77,13 +77,9 @@ CloudSegmentation<PointT>::computeField()
     if (detail::preprocessCloud(cloud, use_normals, params, *working_, working_indices,
                                 copy_to_working, stats_)) {
       field_seconds_.emplace_back("preprocessing", stats_.seconds_preprocessing);
-      medial_ok = detail::medialMeshGraph(working_, mesh_estimation_, base, structured, graph,
-                                          tags_, field_seconds_);
-      // Noise on a plate thinner than the orientation neighbourhood flips patches of estimated
-      // normals, and the inside test then cuts the plate's medial sheet to pieces.
-      if (medial_ok && stats_.normals_estimated)
-        detail::retryFragmentedWithMirrorNormals(working_, params.orientation_k, mesh_estimation_,
-                                                 base, structured, graph, tags_, field_seconds_);
+      medial_ok = detail::medialMeshGraph(working_, stats_.normals_estimated, params.orientation_k,
+                                          mesh_estimation_, base, structured, graph, tags_,
+                                          field_seconds_);
     }
   }
   else {

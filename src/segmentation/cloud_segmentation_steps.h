@@ -37,24 +37,19 @@ medialPointGraph(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton, int k, 
 
 /** \brief The medial mesh of the working cloud and its MAT graph and structure tags (as on
  * meshes). Appends "medial" and "graph" to \a stage_seconds.
+ *
+ * With \a retry_fragmented (normals estimated from the points), an initial MAT that falls apart
+ * (more than 8 components) has \a working's normals oriented again with the mirror relation
+ * (NormalOrientation::setMirrorRelationFlag, \a orientation_k neighbours); that cloud replaces
+ * \a working when its initial MAT has at most 3/4 of the components. Only the kept initial MAT
+ * is simplified: Q-MAT drops isolated spheres and keeps the other components, so the initial
+ * MATs, counted without their isolated spheres, tell what the base MATs would.
  * \return false when the estimation fails (it said why) or the base MAT gives no graph node */
 bool
-medialMeshGraph(const pcl::PointCloud<pcl::PointNormal>::ConstPtr& working,
-                CloudMedialMeshEstimation& estimation, MedialMesh& base, MedialMesh& structured,
-                MatGraph::Ptr& graph, StructureTags& tags,
+medialMeshGraph(pcl::PointCloud<pcl::PointNormal>::Ptr& working, bool retry_fragmented,
+                int orientation_k, CloudMedialMeshEstimation& estimation, MedialMesh& base,
+                MedialMesh& structured, MatGraph::Ptr& graph, StructureTags& tags,
                 StageTimings& stage_seconds);
-
-/** \brief When the base MAT computed from estimated normals falls apart (more than 8
- * components), orient \a working's normals again with the mirror relation
- * (NormalOrientation::setMirrorRelationFlag) and keep that medial mesh when it has at most 3/4
- * of the components. \a working, the medial meshes, \a graph and \a tags are replaced when the
- * retry is kept; its seconds are added to "medial" and "graph" either way.
- * \return true when the retry was kept */
-bool
-retryFragmentedWithMirrorNormals(pcl::PointCloud<pcl::PointNormal>::Ptr& working, int orientation_k,
-                                 CloudMedialMeshEstimation& estimation, MedialMesh& base,
-                                 MedialMesh& structured, MatGraph::Ptr& graph, StructureTags& tags,
-                                 StageTimings& stage_seconds);
 
 /** \brief What CloudSegmentation does once the MAT graph exists (untyped core).
  * \param[in] graph the MAT graph (medial mesh or meso-skeleton)

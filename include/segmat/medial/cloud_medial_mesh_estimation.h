@@ -98,6 +98,18 @@ public:
   bool
   compute(MedialMesh& base, MedialMesh& structured);
 
+  /** \brief compute() in two halves, as MedialMeshEstimation: the initial MAT of the cloud
+   * (getMedialMeshEstimation().getInitialMat()), then its simplification. The cloud must stay
+   * as it is between the two.
+   * \return false (PCL_ERROR) as compute() */
+  bool
+  computeInitialMat();
+
+  /** \brief The simplification of the initial MAT of the last computeInitialMat(), once per
+   * computeInitialMat() (MedialMeshEstimation::simplify()). */
+  bool
+  simplify(MedialMesh& base, MedialMesh& structured);
+
   /** \brief The splat surface of the last compute() (one triangle per used point). */
   const TriangleMesh&
   getSplatSurface() const

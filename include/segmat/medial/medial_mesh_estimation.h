@@ -21,7 +21,8 @@ struct MedialMeshEstimationStatistics
   std::size_t filled_holes = 0;
   std::size_t base_spheres = 0;       ///< spheres of the base MAT
   std::size_t structured_spheres = 0; ///< spheres of the structured MAT
-  double seconds_initial = 0.0;       ///< VoronoiMat (sampling, Delaunay, inside test, assembly)
+  /// VoronoiMat (sampling, Delaunay, inside test, assembly) and the covered-hole filling
+  double seconds_initial = 0.0;
   double seconds_simplification = 0.0; ///< QmatSimplification (both targets, one run)
   double seconds_total = 0.0;         ///< the whole compute()
   VoronoiMatStatistics voronoi;       ///< the initial step's own sizes and stage times
@@ -122,7 +123,8 @@ public:
   /** \brief Threads. */
   unsigned getNumberOfThreads() const { return voronoi_.getNumberOfThreads(); }
 
-  /** \brief Computes the initial MAT, then the base and structured MATs.
+  /** \brief Computes the initial MAT, then the base and structured MATs: computeInitialMat(),
+   * then simplify().
    * \param[out] base the base MAT (input units)
    * \param[out] structured the structured MAT (input units)
    * \return false (PCL_ERROR, empty outputs) when there is no input, VoronoiMat fails, the mesh
@@ -131,7 +133,23 @@ public:
   bool
   compute(MedialMesh& base, MedialMesh& structured);
 
-  /** \brief The initial Voronoi medial mesh of the last compute(), its covered holes closed. */
+  /** \brief The expensive half of compute(): the initial Voronoi MAT, its covered holes closed
+   * (getInitialMat()). A caller that chooses between inputs by their initial MATs (their
+   * components, say) simplifies only the one it keeps.
+   * \return false (PCL_ERROR) as compute() before the simplification */
+  bool
+  computeInitialMat();
+
+  /** \brief The other half: Q-MAT of the initial MAT of the last computeInitialMat(), with the
+   * input mesh and winding number it used (the mesh must not have been changed since). Once per
+   * computeInitialMat(): it releases the winding-number hierarchy.
+   * \return false (PCL_ERROR, empty outputs) without a successful computeInitialMat() since the
+   *         last simplify(), or when the simplification rejects its settings */
+  bool
+  simplify(MedialMesh& base, MedialMesh& structured);
+
+  /** \brief The initial Voronoi medial mesh of the last computeInitialMat(), its covered holes
+   * closed. */
   const MedialMesh& getInitialMat() const { return *initial_; }
 
   /** \brief Counts and timings of the last compute(). */
@@ -145,6 +163,8 @@ private:
   int simplification_structured_target_ = -1;
   bool keep_centres_inside_ = true;
   MedialMesh::Ptr initial_ = std::make_shared<MedialMesh>();
+  /// The hierarchy of the last computeInitialMat(), for simplify(); released by simplify().
+  std::shared_ptr<const WindingNumber> initial_winding_number_;
   MedialMeshEstimationStatistics statistics_;
 };
 
