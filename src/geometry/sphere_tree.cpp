@@ -115,14 +115,18 @@ SphereTree::signedDistance(const Eigen::Vector3d& q, double stop_below, int* nea
     return gap.norm() - node.max_radius;
   };
   // Median splits keep the depth <= log2(n) + 1 and the stack never holds more than depth + 1
-  // entries, so 128 cannot overflow for any n that fits in memory.
+  // entries, so 128 cannot overflow for any n that fits in memory. Each node's bound is kept
+  // from when it was pushed (one square root per node, not two).
   int stack[128];
+  double bounds[128];
   int top = 0;
-  stack[top++] = 0;
+  stack[top] = 0;
+  bounds[top++] = lower_bound(nodes_[0]);
   while (top > 0 && best > stop_below) {
-    const Node& node = nodes_[stack[--top]];
-    if (lower_bound(node) >= best)
+    --top;
+    if (bounds[top] >= best)
       continue;
+    const Node& node = nodes_[stack[top]];
     if (node.left < 0) {
       for (int k = node.first; k < node.last; ++k) {
         const double d = (q - centers_[k]).norm() - radii_[k];
@@ -136,12 +140,14 @@ SphereTree::signedDistance(const Eigen::Vector3d& q, double stop_below, int* nea
     const double bl = lower_bound(nodes_[node.left]), br = lower_bound(nodes_[node.right]);
     // Push the farther child first so the nearer one is searched first.
     const bool left_first = bl <= br;
-    const int near_child = left_first ? node.left : node.right;
-    const int far_child = left_first ? node.right : node.left;
-    if (std::max(bl, br) < best)
-      stack[top++] = far_child;
-    if (std::min(bl, br) < best)
-      stack[top++] = near_child;
+    if (std::max(bl, br) < best) {
+      stack[top] = left_first ? node.right : node.left;
+      bounds[top++] = left_first ? br : bl;
+    }
+    if (std::min(bl, br) < best) {
+      stack[top] = left_first ? node.left : node.right;
+      bounds[top++] = left_first ? bl : br;
+    }
   }
   if (nearest)
     *nearest = best_pos >= 0 ? original_[best_pos] : -1;
