@@ -217,6 +217,41 @@ TEST(QmatSimplification, AutomaticStructuredTargetCountsBeyondPinnedSpheres)
   EXPECT_EQ(literal.numTriangles(), 0u);
 }
 
+TEST(QmatSimplification, DropsIsolatedSpheresAndKeepsEveryOtherComponent)
+{
+  // A noisy cloud's segmentation chooses between two initial MATs by the components that Q-MAT
+  // will leave (CloudSegmentation: the retry with mirror-related normals), counting them before
+  // Q-MAT runs. That count is right only if Q-MAT drops the isolated spheres and neither joins
+  // nor splits the other components: here a sheet, three small triangles and two spheres
+  // without an edge (5 + 1 components before, 4 after).
+  const MedialMesh sheet = test::planarSheet(6, 1.0, 0.1);
+  std::vector<Eigen::Vector3d> centers = sheet.centers();
+  std::vector<double> radii = sheet.radii();
+  std::vector<Eigen::Vector3i> triangles = sheet.triangles();
+  for (int i = 0; i < 3; ++i) {
+    const int first = static_cast<int>(centers.size());
+    for (const Eigen::Vector3d offset : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.05, 0, 0),
+                                         Eigen::Vector3d(0, 0.05, 0)}) {
+      centers.push_back(Eigen::Vector3d(2.0 + 0.3 * i, 0.0, 0.0) + offset);
+      radii.push_back(0.01);
+    }
+    triangles.emplace_back(first, first + 1, first + 2);
+  }
+  for (const double x : {-1.0, -2.0}) { // isolated
+    centers.emplace_back(x, 0.0, 0.0);
+    radii.push_back(0.02);
+  }
+  const MedialMesh mat(centers, radii, {}, triangles);
+  ASSERT_EQ(mat.numConnectedComponents(), 6u);
+  for (const int base_target : {30, 4}) {
+    auto [base, structured] = simplify(mat, base_target, 4);
+    EXPECT_EQ(base.numConnectedComponents(), 4u) << "base target " << base_target;
+    EXPECT_EQ(structured.numConnectedComponents(), 4u) << "base target " << base_target;
+    for (const Eigen::Vector3d& c : base.centers())
+      EXPECT_GT(c.x(), -0.5) << "an isolated sphere survived";
+  }
+}
+
 TEST(QmatSimplification, AutomaticStructuredTargetBeyondPinnedLoops)
 {
   // Six loops of 30 cones (tunnels): each keeps at least a triangle of edges, so 18 spheres

@@ -110,7 +110,8 @@ public:
   bool
   simplify(MedialMesh& base, MedialMesh& structured);
 
-  /** \brief The splat surface of the last compute() (one triangle per used point). */
+  /** \brief The splat surface of the last compute() or computeInitialMat() (one triangle per
+   * used point). */
   const TriangleMesh&
   getSplatSurface() const
   {
