@@ -53,6 +53,33 @@ totalTriangleArea(const MedialMesh& m)
   return area;
 }
 
+/// A unit sheet of n × n squares (test::planarSheet, radius 0.1), \a islands separate small
+/// triangles 0.2 apart along x from 2 (the islands of a noisy Voronoi MAT), and a sphere without
+/// an edge at each of \a isolated_x.
+MedialMesh
+sheetWithIslands(int n, int islands, const std::vector<double>& isolated_x = {})
+{
+  const MedialMesh sheet = test::planarSheet(n, 1.0, 0.1);
+  std::vector<Eigen::Vector3d> centers = sheet.centers();
+  std::vector<double> radii = sheet.radii();
+  std::vector<Eigen::Vector3i> triangles = sheet.triangles();
+  for (int i = 0; i < islands; ++i) {
+    const int first = static_cast<int>(centers.size());
+    const Eigen::Vector3d corner(2.0 + 0.2 * i, 0.0, 0.0);
+    for (const Eigen::Vector3d offset : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.05, 0, 0),
+                                         Eigen::Vector3d(0, 0.05, 0)}) {
+      centers.push_back(corner + offset);
+      radii.push_back(0.01);
+    }
+    triangles.emplace_back(first, first + 1, first + 2);
+  }
+  for (const double x : isolated_x) {
+    centers.emplace_back(x, 0.0, 0.0);
+    radii.push_back(0.02);
+  }
+  return MedialMesh(centers, radii, {}, triangles);
+}
+
 bool
 sameMat(const MedialMesh& a, const MedialMesh& b)
 {
@@ -178,21 +205,7 @@ TEST(QmatSimplification, AutomaticStructuredTargetCountsBeyondPinnedSpheres)
   // the sheet): the automatic target max(15, ⌊0.259⌋) = 15 is out of reach. Run down to 31,
   // the sheet would be a single sphere; instead the structured MAT keeps 31 + 15 = 46 and the
   // sheet keeps triangles. An explicit target of 15 still goes to the 31.
-  const MedialMesh sheet = test::planarSheet(12, 1.0, 0.1);
-  std::vector<Eigen::Vector3d> centers = sheet.centers();
-  std::vector<double> radii = sheet.radii();
-  std::vector<Eigen::Vector3i> triangles = sheet.triangles();
-  for (int i = 0; i < 30; ++i) {
-    const int first = static_cast<int>(centers.size());
-    const Eigen::Vector3d corner(2.0 + 0.2 * i, 0.0, 0.0);
-    for (const Eigen::Vector3d offset : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.05, 0, 0),
-                                         Eigen::Vector3d(0, 0.05, 0)}) {
-      centers.push_back(corner + offset);
-      radii.push_back(0.01);
-    }
-    triangles.emplace_back(first, first + 1, first + 2);
-  }
-  const MedialMesh mat(centers, radii, {}, triangles);
+  const MedialMesh mat = sheetWithIslands(12, 30);
   ASSERT_EQ(mat.numVertices(), 259u);
   ASSERT_EQ(bettiNumbers(mat).b0, 31);
 
@@ -224,24 +237,7 @@ TEST(QmatSimplification, DropsIsolatedSpheresAndKeepsEveryOtherComponent)
   // Q-MAT runs. That count is right only if Q-MAT drops the isolated spheres and neither joins
   // nor splits the other components: here a sheet, three small triangles and two spheres
   // without an edge (5 + 1 components before, 4 after).
-  const MedialMesh sheet = test::planarSheet(6, 1.0, 0.1);
-  std::vector<Eigen::Vector3d> centers = sheet.centers();
-  std::vector<double> radii = sheet.radii();
-  std::vector<Eigen::Vector3i> triangles = sheet.triangles();
-  for (int i = 0; i < 3; ++i) {
-    const int first = static_cast<int>(centers.size());
-    for (const Eigen::Vector3d offset : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.05, 0, 0),
-                                         Eigen::Vector3d(0, 0.05, 0)}) {
-      centers.push_back(Eigen::Vector3d(2.0 + 0.3 * i, 0.0, 0.0) + offset);
-      radii.push_back(0.01);
-    }
-    triangles.emplace_back(first, first + 1, first + 2);
-  }
-  for (const double x : {-1.0, -2.0}) { // isolated
-    centers.emplace_back(x, 0.0, 0.0);
-    radii.push_back(0.02);
-  }
-  const MedialMesh mat(centers, radii, {}, triangles);
+  const MedialMesh mat = sheetWithIslands(6, 3, {-1.0, -2.0});
   ASSERT_EQ(mat.numConnectedComponents(), 6u);
   for (const int base_target : {30, 4}) {
     auto [base, structured] = simplify(mat, base_target, 4);
