@@ -236,7 +236,7 @@ TEST(QmatSimplification, DropsIsolatedSpheresAndKeepsEveryOtherComponent)
   // will leave (CloudSegmentation: the retry with mirror-related normals), counting them before
   // Q-MAT runs. That count is right only if Q-MAT drops the isolated spheres and neither joins
   // nor splits the other components: here a sheet, three small triangles and two spheres
-  // without an edge (5 + 1 components before, 4 after).
+  // without an edge (6 components before, 4 after).
   const MedialMesh mat = sheetWithIslands(6, 3, {-1.0, -2.0});
   ASSERT_EQ(mat.numConnectedComponents(), 6u);
   for (const int base_target : {30, 4}) {
