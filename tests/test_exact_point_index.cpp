@@ -111,7 +111,12 @@ TEST(ExactPointIndex, NonFiniteQueriesAndEmptyIndexFindNothing)
 
   const std::vector<Eigen::Vector3d> one{Eigen::Vector3d(1, 2, 3)};
   const ExactPointIndex index(one);
-  EXPECT_EQ(index.nearest(Eigen::Vector3d(1e30, 0, 0)), 0);
+  EXPECT_EQ(index.nearest(Eigen::Vector3d(1e30, 0, 0)), 0); // its squared distance overflows float
+  EXPECT_EQ(index.nearest(Eigen::Vector3d(1e39, 0, 0)), 0); // the query itself does
+  index.within(Eigen::Vector3d(1e39, 0, 0), 2e39, found);
+  EXPECT_EQ(found, std::vector<int>{0});
+  index.within(Eigen::Vector3d(1e39, 0, 0), 1e38, found);
+  EXPECT_TRUE(found.empty());
   EXPECT_EQ(index.nearest(Eigen::Vector3d(std::nan(""), 0, 0)), -1);
   index.within(Eigen::Vector3d(1, 2, 3), std::numeric_limits<double>::infinity(), found);
   EXPECT_TRUE(found.empty());

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numeric>
 
 namespace segmat {
 namespace detail {
@@ -35,15 +36,32 @@ ExactPointIndex::ExactPointIndex(const std::vector<Eigen::Vector3d>& points) : p
               1e-6 * std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) + 1e-12;
 }
 
+bool
+ExactPointIndex::floatQuery(const Eigen::Vector3d& q, pcl::PointXYZ& p)
+{
+  p = pcl::PointXYZ(static_cast<float>(q.x()), static_cast<float>(q.y()),
+                    static_cast<float>(q.z()));
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+void
+ExactPointIndex::takeAll() const
+{
+  found_.resize(points_.size());
+  std::iota(found_.begin(), found_.end(), 0);
+}
+
 void
 ExactPointIndex::within(const Eigen::Vector3d& q, double radius, std::vector<int>& out) const
 {
   out.clear();
   if (!(radius > 0.0) || !std::isfinite(radius) || !q.allFinite() || points_.empty())
-    return; // a non-finite ball contains nothing (and PCL asserts on NaN queries)
-  const pcl::PointXYZ p(static_cast<float>(q.x()), static_cast<float>(q.y()),
-                        static_cast<float>(q.z()));
-  tree_.radiusSearch(p, radius * (1.0 + 1e-6) + margin_, found_, sq_distances_);
+    return; // a non-finite ball contains nothing
+  pcl::PointXYZ p;
+  if (floatQuery(q, p))
+    tree_.radiusSearch(p, radius * (1.0 + 1e-6) + margin_, found_, sq_distances_);
+  else
+    takeAll(); // beyond float's range (PCL asserts on non-finite queries)
   for (const int s : found_)
     if ((points_[std::size_t(s)] - q).norm() < radius)
       out.push_back(s);
@@ -54,25 +72,23 @@ ExactPointIndex::nearest(const Eigen::Vector3d& q) const
 {
   if (!q.allFinite() || points_.empty())
     return -1;
-  const pcl::PointXYZ p(static_cast<float>(q.x()), static_cast<float>(q.y()),
-                        static_cast<float>(q.z()));
-  const bool searched = tree_.nearestKSearch(p, 1, found_, sq_distances_) > 0 &&
-                        std::isfinite(sq_distances_[0]);
-  if (searched) {
-    // The float nearest bounds the exact distance; every point that may beat it lies within.
-    const double bound = std::sqrt(double(sq_distances_[0])) * (1.0 + 1e-5) + margin_;
-    tree_.radiusSearch(p, bound, found_, sq_distances_);
-  }
-  else { // beyond float's range: every point is a candidate
-    found_.resize(points_.size());
-    for (std::size_t s = 0; s < points_.size(); ++s)
-      found_[s] = int(s);
-  }
+  // The float nearest bounds the exact distance, and every point that may beat it lies within
+  // that bound. A query beyond float's range, or whose squared distances overflow float (the
+  // tree then finds nothing), takes every point as a candidate.
+  pcl::PointXYZ p;
+  if (floatQuery(q, p) && tree_.nearestKSearch(p, 1, found_, sq_distances_) > 0 &&
+      std::isfinite(sq_distances_[0]))
+    tree_.radiusSearch(p, std::sqrt(double(sq_distances_[0])) * (1.0 + 1e-5) + margin_, found_,
+                       sq_distances_);
+  else
+    takeAll();
   int best = -1;
   double best_d = std::numeric_limits<double>::infinity();
   for (const int s : found_) {
+    if (!points_[std::size_t(s)].allFinite())
+      continue;
     const double d = (points_[std::size_t(s)] - q).squaredNorm();
-    if (d < best_d || (d == best_d && s < best)) {
+    if (best < 0 || d < best_d || (d == best_d && s < best)) {
       best_d = d;
       best = s;
     }

@@ -32,6 +32,11 @@ public:
   int nearest(const Eigen::Vector3d& q) const;
 
 private:
+  /** \a q in float; false when that is not finite (a query beyond float's range). */
+  static bool floatQuery(const Eigen::Vector3d& q, pcl::PointXYZ& p);
+  /** Every point as a candidate, for queries the float tree cannot answer. */
+  void takeAll() const;
+
   const std::vector<Eigen::Vector3d>& points_;
   PointKdTree tree_;
   double margin_ = 0.0; ///< float rounding of a point or a query, in absolute terms

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <chrono>
 #include <numeric>
+#include <optional>
 
 namespace segmat {
 namespace detail {
@@ -71,7 +72,7 @@ medialMeshGraph(pcl::PointCloud<pcl::PointNormal>::Ptr& working, bool retry_frag
   constexpr std::size_t kFragmented = 8;
   const std::size_t components =
       componentsAfterQmat(estimation.getMedialMeshEstimation().getInitialMat());
-  CloudMedialMeshEstimation mirrored_estimation; // replaced by a copy when needed
+  std::optional<CloudMedialMeshEstimation> mirrored_estimation;
   CloudMedialMeshEstimation* kept = &estimation;
   if (retry_fragmented && components > kFragmented) {
     pcl::PointCloud<pcl::PointNormal>::Ptr mirrored(
@@ -79,17 +80,17 @@ medialMeshGraph(pcl::PointCloud<pcl::PointNormal>::Ptr& working, bool retry_frag
     NormalOrientation orientation;
     orientation.setKSearch(orientation_k);
     orientation.setMirrorRelationFlag(true);
-    mirrored_estimation = estimation; // the same settings; its own initial MAT below
-    mirrored_estimation.setInputCloud(mirrored);
+    mirrored_estimation.emplace(estimation); // the same settings; its own initial MAT below
+    mirrored_estimation->setInputCloud(mirrored);
     // Only a clearly less fragmented axis replaces the first: near-ties swap one noisy answer
     // for another (noisy octopus 126: 85 → 84 components, and a worse score).
-    if (orientation.orient(*mirrored) && mirrored_estimation.computeInitialMat() &&
-        4 * componentsAfterQmat(mirrored_estimation.getMedialMeshEstimation().getInitialMat()) <=
+    if (orientation.orient(*mirrored) && mirrored_estimation->computeInitialMat() &&
+        4 * componentsAfterQmat(mirrored_estimation->getMedialMeshEstimation().getInitialMat()) <=
             3 * components) {
-      kept = &mirrored_estimation;
+      kept = &*mirrored_estimation;
       working = mirrored;
     }
-    mirrored_estimation.setInputCloud(nullptr);
+    mirrored_estimation->setInputCloud(nullptr);
   }
   const bool ok = kept->simplify(base, structured);
   estimation.setInputCloud(nullptr);

@@ -24,7 +24,7 @@ uniform01(std::mt19937& engine)
 /** Every 3rd sphere (the reference's visibility subsampling), and every k-th when that leaves
  * more than kMaxVisibilityPoints: a patch of up to 768 spheres is tested as in SEG-MAT, and a
  * larger one estimates the visible fraction about as finely as that. Every 3rd sphere of two
- * large patches (the wall of a noisy cup: 421 × 598 points) asked for a quarter of a million
+ * large patches (the wall of a noisy cup: 421 × 598 points) would ask for a quarter of a million
  * segment tests. */
 std::vector<int>
 visibilitySpheres(const std::vector<int>& spheres)
