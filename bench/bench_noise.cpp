@@ -258,7 +258,7 @@ main(int argc, char** argv)
   std::vector<int> only;
   std::size_t points = 20000;
   std::uint32_t seed_offset = 0;
-  int draws = 1, noise_draws = 1;
+  int draws = 1, noise_draws = 1, repeat = 1;
   bool principal_axes = true, normals = false;
   TrueSurface truth;
   for (int i = 1; i < argc; ++i) {
@@ -289,6 +289,8 @@ main(int argc, char** argv)
       draws = std::max(1, std::atoi(argv[++i]));
     else if (arg == "--noise-draws" && has_value)
       noise_draws = std::max(1, std::atoi(argv[++i]));
+    else if (arg == "--repeat" && has_value)
+      repeat = std::max(1, std::atoi(argv[++i]));
     else if (arg == "--write" && has_value)
       write_dir = argv[++i];
     else if (!arg.empty() && arg[0] != '-')
@@ -296,7 +298,7 @@ main(int argc, char** argv)
     else {
       std::cerr << "usage: bench_noise [PSB_DIR] [--kind mesh|cloud] [--levels 0,0.2,0.5,1] "
                    "[--models 1,21,...|--half tune|check] [--points N] [--seed-offset K] "
-                   "[--draws K] [--noise-draws K] [--input-axes] [--write DIR] "
+                   "[--draws K] [--noise-draws K] [--repeat R] [--input-axes] [--write DIR] "
                    "[--surface-error] [--true-surface] [--normals]\n";
       return arg == "-h" || arg == "--help" ? 0 : 2;
     }
@@ -368,11 +370,23 @@ main(int argc, char** argv)
                          (kind == "mesh" ? "/off/" + stem + ".off" : "/xyz/" + stem + ".xyz");
           }
           for (int d = 0; d < draws; ++d) {
-            Result r = kind == "mesh"
-                           ? segmentMesh(mesh, levels[l], seed, std::uint32_t(d), principal_axes,
-                                         humans, write_path)
-                           : segmentCloud(cloud, levels[l], seed, humans, write_path, truth,
-                                          normals);
+            // --repeat: the same segmentation R times in a row; its time is their median (the
+            // run with the median time gives the stages), so that one slow moment of the
+            // machine does not move it. The labels must come out the same every time.
+            std::vector<Result> repeats;
+            for (int t = 0; t < repeat; ++t) {
+              repeats.push_back(kind == "mesh" ? segmentMesh(mesh, levels[l], seed,
+                                                             std::uint32_t(d), principal_axes,
+                                                             humans, t == 0 ? write_path : "")
+                                               : segmentCloud(cloud, levels[l], seed, humans,
+                                                              t == 0 ? write_path : "", truth,
+                                                              normals));
+              if (repeats.back().labels != repeats.front().labels)
+                throw segmat::Error("shape " + stem + ": a repeated segmentation gave other labels");
+            }
+            std::sort(repeats.begin(), repeats.end(),
+                      [](const Result& a, const Result& b) { return a.seconds < b.seconds; });
+            Result r = std::move(repeats[repeats.size() / 2]);
             r.draw = k * draws + d;
             r.shape = id;
             results[l].push_back(r);
@@ -426,16 +440,37 @@ main(int argc, char** argv)
     for (const Result& r : results[std::size_t(clean_level - levels.begin())])
       clean_structured[r.shape] += r.structured / double(draws);
   const bool grown_column = clean_level != levels.end() && levels.size() > 1;
+  // Per shape, its mean seconds at a level over its clean seconds; the median over the shapes.
+  // A shape's clean and noisy runs follow each other within seconds, so the machine's speed,
+  // which drifts over minutes, cancels in each shape's ratio; it does not in the ratio of two
+  // medians, which are times of different shapes taken minutes apart.
+  std::map<int, double> clean_seconds;
+  if (clean_level != levels.end())
+    for (const Result& r : results[std::size_t(clean_level - levels.begin())])
+      clean_seconds[r.shape] += r.seconds / double(draws);
+  const auto timeRatio = [&](std::size_t l) {
+    std::map<int, std::pair<double, int>> sum; // seconds and runs per shape
+    for (const Result& r : results[l]) {
+      sum[r.shape].first += r.seconds;
+      ++sum[r.shape].second;
+    }
+    std::vector<double> ratios;
+    for (const auto& [shape, seconds_runs] : sum)
+      if (clean_seconds[shape] > 0.0)
+        ratios.push_back(seconds_runs.first / seconds_runs.second / clean_seconds[shape]);
+    return ratios.empty() ? 0.0 : segmat::bench::median(ratios);
+  };
   std::printf("| noise sigma (%% of diagonal) | 1 - RI | parts per shape | structured MAT spheres "
-              "per shape |%s median s | max s |%s%s%s\n"
-              "|---|---|---|---|%s---|---|%s%s%s\n",
+              "per shape |%s median s | max s |%s%s%s%s\n"
+              "|---|---|---|---|%s---|---|%s%s%s%s\n",
               grown_column ? " shapes with structured MAT > 1.5 × clean |" : "",
+              grown_column ? " s / clean s, median over shapes |" : "",
               runs > 1 ? " 1 - RI between runs |" : "",
               truth.measure ? " smoothed points to true surface, median (% of diagonal) | "
                               "remaining σ̂ (% of diagonal) |"
                             : "",
               runs > 1 ? " 1 - RI per run |" : "", grown_column ? "---|" : "",
-              runs > 1 ? "---|" : "",
+              grown_column ? "---|" : "", runs > 1 ? "---|" : "",
               truth.measure ? "---|---|" : "", runs > 1 ? "---|" : "");
   for (std::size_t l = 0; l < levels.size(); ++l) {
     double ri = 0.0, parts = 0.0, structured = 0.0;
@@ -459,6 +494,8 @@ main(int argc, char** argv)
     }
     std::printf(" %.2f | %.2f |", segmat::bench::median(seconds),
                 *std::max_element(seconds.begin(), seconds.end()));
+    if (grown_column)
+      std::printf(" %.2f |", timeRatio(l));
     if (runs > 1) {
       if (between[l].empty())
         std::printf(" – |"); // one run per shape at this level
