@@ -382,7 +382,8 @@ main(int argc, char** argv)
                                                               t == 0 ? write_path : "", truth,
                                                               normals));
               if (repeats.back().labels != repeats.front().labels)
-                throw segmat::Error("shape " + stem + ": a repeated segmentation gave other labels");
+                throw segmat::Error("shape " + stem +
+                                    ": a repeated segmentation gave other labels");
             }
             std::sort(repeats.begin(), repeats.end(),
                       [](const Result& a, const Result& b) { return a.seconds < b.seconds; });
@@ -435,31 +436,14 @@ main(int argc, char** argv)
   // The structured MAT should describe the shape, not the noise (docs/noise.md): its size per
   // level, and how many shapes' structured MATs grew to more than 1.5 times their clean one's.
   const auto clean_level = std::find(levels.begin(), levels.end(), 0.0);
-  std::map<int, double> clean_structured; // per shape, the clean level's mean
+  // Per shape, the clean level's mean structured MAT size and seconds.
+  std::map<int, double> clean_structured, clean_seconds;
   if (clean_level != levels.end())
-    for (const Result& r : results[std::size_t(clean_level - levels.begin())])
+    for (const Result& r : results[std::size_t(clean_level - levels.begin())]) {
       clean_structured[r.shape] += r.structured / double(draws);
-  const bool grown_column = clean_level != levels.end() && levels.size() > 1;
-  // Per shape, its mean seconds at a level over its clean seconds; the median over the shapes.
-  // A shape's clean and noisy runs follow each other within seconds, so the machine's speed,
-  // which drifts over minutes, cancels in each shape's ratio; it does not in the ratio of two
-  // medians, which are times of different shapes taken minutes apart.
-  std::map<int, double> clean_seconds;
-  if (clean_level != levels.end())
-    for (const Result& r : results[std::size_t(clean_level - levels.begin())])
       clean_seconds[r.shape] += r.seconds / double(draws);
-  const auto timeRatio = [&](std::size_t l) {
-    std::map<int, std::pair<double, int>> sum; // seconds and runs per shape
-    for (const Result& r : results[l]) {
-      sum[r.shape].first += r.seconds;
-      ++sum[r.shape].second;
     }
-    std::vector<double> ratios;
-    for (const auto& [shape, seconds_runs] : sum)
-      if (clean_seconds[shape] > 0.0)
-        ratios.push_back(seconds_runs.first / seconds_runs.second / clean_seconds[shape]);
-    return ratios.empty() ? 0.0 : segmat::bench::median(ratios);
-  };
+  const bool grown_column = clean_level != levels.end() && levels.size() > 1;
   std::printf("| noise sigma (%% of diagonal) | 1 - RI | parts per shape | structured MAT spheres "
               "per shape |%s median s | max s |%s%s%s%s\n"
               "|---|---|---|---|%s---|---|%s%s%s%s\n",
@@ -476,7 +460,9 @@ main(int argc, char** argv)
     double ri = 0.0, parts = 0.0, structured = 0.0;
     std::vector<double> seconds;
     std::map<int, std::pair<double, int>> shape_structured; // sum and runs per shape
+    std::map<int, double> shape_seconds;                    // sum per shape
     for (const Result& r : results[l]) {
+      shape_seconds[r.shape] += r.seconds;
       ri += r.ri / double(results[l].size());
       parts += r.parts / double(results[l].size());
       structured += r.structured / double(results[l].size());
@@ -494,8 +480,17 @@ main(int argc, char** argv)
     }
     std::printf(" %.2f | %.2f |", segmat::bench::median(seconds),
                 *std::max_element(seconds.begin(), seconds.end()));
-    if (grown_column)
-      std::printf(" %.2f |", timeRatio(l));
+    if (grown_column) {
+      // Each shape's mean seconds over its clean seconds, the median over the shapes. A shape's
+      // runs at every level follow each other within seconds, so the machine's speed, which
+      // drifts over minutes, cancels in its ratio; it does not in the ratio of two medians,
+      // which are times of different shapes taken minutes apart.
+      std::vector<double> ratios;
+      for (const auto& [shape, sum] : shape_seconds)
+        if (clean_seconds[shape] > 0.0)
+          ratios.push_back(sum / shape_structured[shape].second / clean_seconds[shape]);
+      std::printf(" %.2f |", ratios.empty() ? 0.0 : segmat::bench::median(ratios));
+    }
     if (runs > 1) {
       if (between[l].empty())
         std::printf(" – |"); // one run per shape at this level
