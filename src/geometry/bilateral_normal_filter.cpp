@@ -93,10 +93,11 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
   auto rangeSigma = [&](const std::vector<Eigen::Vector3d>& normals) {
     if (edge_pairs.empty())
       return settings.range_sigma;
+    // Squared: the square root is monotonic, so it is taken of the median alone.
     for (std::size_t e = 0; e < edge_pairs.size(); ++e)
-      chords[e] = (normals[edge_pairs[e].first] - normals[edge_pairs[e].second]).norm();
+      chords[e] = (normals[edge_pairs[e].first] - normals[edge_pairs[e].second]).squaredNorm();
     std::nth_element(chords.begin(), chords.begin() + chords.size() / 2, chords.end());
-    return std::max(settings.range_sigma, chords[chords.size() / 2]);
+    return std::max(settings.range_sigma, std::sqrt(chords[chords.size() / 2]));
   };
   const double still = 1.0 - std::cos(settings.still_degrees * M_PI / 180.0);
 
@@ -114,18 +115,22 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
       fixed[mirror[a]] = g.areas[f] * spatial;
     }
   std::vector<Eigen::Vector3d> normals = g.normals, next(nf);
-  std::vector<float> range_weight(neighbours.size());
-  // Each pair once, by its lower face (Gaussians are symmetric): its entry, so that the range
-  // weights of all pairs go through one vectorised exp per iteration.
-  std::vector<std::size_t> lower;
-  std::vector<int> lower_face;
+  // A face without a normal keeps none and lends none: filtering never makes a normal zero.
+  std::vector<char> has_normal(nf);
+  for (std::size_t f = 0; f < nf; ++f)
+    has_normal[f] = !g.normals[f].isZero();
+  // Each pair once, by its lower face (Gaussians are symmetric), so that the range weights of
+  // all pairs go through one vectorised exp per iteration; pair[a] is entry a's pair.
+  std::vector<int> lower_face, upper_face;
+  std::vector<int> pair(neighbours.size());
   for (std::size_t f = 0; f < nf; ++f)
     for (std::size_t a = first[f]; a < first[f + 1]; ++a)
       if (neighbours[a] > int(f)) {
-        lower.push_back(a);
+        pair[a] = pair[mirror[a]] = int(lower_face.size());
         lower_face.push_back(int(f));
+        upper_face.push_back(neighbours[a]);
       }
-  Eigen::ArrayXf exponent(static_cast<Eigen::Index>(lower.size()));
+  Eigen::ArrayXf exponent(static_cast<Eigen::Index>(lower_face.size()));
   // Per-face turns summed in face order afterwards: a parallel reduction would add them in an
   // order that depends on the thread count, and the stopping test could then differ.
   constexpr double kNone = std::numeric_limits<double>::quiet_NaN(); // a face without normal
@@ -139,26 +144,23 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
     const double inv_r = 1.0 / (2.0 * range_sigma * range_sigma);
     // (Pairs with a face without normal get a weight that nothing reads.)
 #pragma omp parallel for schedule(static) num_threads(threads)
-    for (long p = 0; p < long(lower.size()); ++p) {
-      const double dr = (normals[lower_face[p]] - normals[neighbours[lower[p]]]).squaredNorm();
+    for (long p = 0; p < long(lower_face.size()); ++p) {
+      const double dr = (normals[lower_face[p]] - normals[upper_face[p]]).squaredNorm();
       exponent[p] = float(-dr * inv_r);
     }
     exponent = exponent.exp();
 #pragma omp parallel for schedule(static) num_threads(threads)
-    for (long p = 0; p < long(lower.size()); ++p)
-      range_weight[lower[p]] = range_weight[mirror[lower[p]]] = exponent[p];
-#pragma omp parallel for schedule(static) num_threads(threads)
     for (long f = 0; f < long(nf); ++f) {
       next[f] = normals[f];
       turn[f] = kNone;
-      if (normals[f].isZero())
+      if (!has_normal[f])
         continue;
       Eigen::Vector3d sum = g.areas[f] * normals[f];
       for (std::size_t a = first[f]; a < first[f + 1]; ++a) {
         const int j = neighbours[a];
-        if (normals[j].isZero())
+        if (!has_normal[j])
           continue;
-        sum += fixed[a] * range_weight[a] * normals[j];
+        sum += fixed[a] * exponent[pair[a]] * normals[j];
       }
       if (sum.norm() > 0.0)
         next[f] = sum.normalized();

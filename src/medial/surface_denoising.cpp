@@ -79,11 +79,15 @@ sidedHeightFit(const Eigen::Vector3f& at, const std::vector<Eigen::Vector3f>& po
   // ridge on the curvature terms keeps the fit posed where few neighbours remain.
   Eigen::Matrix<double, 6, 1> coef = Eigen::Matrix<double, 6, 1>::Zero();
   const double bands[] = {4.0 * band, 2.0 * band, band, band};
-  for (const double b : bands) {
-    const double inv_band2 = 1.0 / (2.0 * b * b);
-    fitted.noalias() = table.topRows<6>().transpose() * coef;
+  for (int round = 0; round < 4; ++round) {
+    const double inv_band2 = 1.0 / (2.0 * bands[round] * bands[round]);
+    if (round == 0)
+      fitted.setZero(); // the plane through the point
+    else
+      fitted.noalias() = table.topRows<6>().transpose() * coef;
     exponent = (-(height - fitted.array()).square() * inv_band2).cast<float>();
-    weight = (spatial * exponent.exp()).cast<double>();
+    exponent = exponent.exp(); // on its own, so that Eigen vectorises it
+    weight = (spatial * exponent).cast<double>();
     const Eigen::Matrix<double, kMoments, 1> sum = table * weight;
     const double total = sum[0];
     if (!(total > 1e-6))
