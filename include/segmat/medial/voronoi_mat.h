@@ -127,7 +127,9 @@ public:
    * pole — is inside without a winding number, and one clearly on the outer side of all four is
    * outside; only the others (small balls, which noise leaves against the surface; a centre near
    * a tangent plane; samples that disagree, as across a thin wall) are evaluated. On a clean
-   * cloud that skips most evaluations and changes no decision (test_cloud_medial_mesh).
+   * cloud that skips most evaluations and changes no decision (test_cloud_medial_mesh). The
+   * normals must be consistently oriented: four flipped ones around an exterior ball make it
+   * look like a pole of the inside (docs/noise.md, "Limits").
    * \param[in] samples the points, or null
    * \param[in] normals their outward unit normals, or null (winding number everywhere) */
   void
