@@ -187,6 +187,14 @@ TEST(LoadCloudErrors, PcdHeaderCatalogue)
   EXPECT_TRUE(cloudFails("width.pcd", edited("WIDTH 3", "WIDTH -3"), 7, "WIDTH needs one"));
   EXPECT_TRUE(cloudFails("data.pcd", edited("DATA ascii", "DATA text"), 11, "DATA must be"));
   EXPECT_TRUE(cloudFails("keyword.pcd", edited("VIEWPOINT", "VIEWPINT"), 9, "unknown PCD header"));
+  // PCL 1.13 sizes the points at POINTS and then writes past them (heap corruption).
+  EXPECT_TRUE(cloudFails("repeat.pcd", edited("COUNT 1 1 1\n", "COUNT 1 1 1\nSIZE 8 8 8\n"), 7,
+                         "the PCD header repeats SIZE"));
+  EXPECT_TRUE(cloudFails("columns.pcd", edited("COUNT 1 1 1\n", "COUNT 1 1 1\nCOLUMNS x y z\n"),
+                         7, "the PCD header repeats FIELDS"));
+  EXPECT_TRUE(cloudFails("late.pcd",
+                         edited("POINTS 3\n", "POINTS 3\nSIZE 8 8 8\n", edited("SIZE 4 4 4\n", "")),
+                         10, "SIZE after POINTS in the PCD header"));
   EXPECT_TRUE(cloudFails(
       "huge.pcd", edited("POINTS 3", "POINTS 300000000", edited("WIDTH 3", "WIDTH 300000000")), 11,
       "300000000 points need at least 1799999999 bytes"));

@@ -288,6 +288,7 @@ checkPcdHeader(const std::string& path)
   std::uint64_t width = 0, height = 1, points = 0;
   bool has_width = false, has_points = false;
   std::string data;
+  std::vector<std::string> seen;
   // Each keyword's values, checked as they come; DATA ends the header.
   while (data.empty()) {
     const std::string_view line = header.next("DATA");
@@ -299,6 +300,16 @@ checkPcdHeader(const std::string& path)
       header.fail("blank line in the PCD header");
     if (keyword.front() == '#')
       continue;
+    // PCL sizes the point data at the POINTS line from the layout read so far (FIELDS, SIZE,
+    // TYPE, COUNT) and takes any later layout line as given: the points are then read past the
+    // end of their buffer. PCL writes each keyword once, the layout before POINTS.
+    const std::string name = keyword == "COLUMNS" ? "FIELDS" : std::string(keyword);
+    if (std::find(seen.begin(), seen.end(), name) != seen.end())
+      header.fail("the PCD header repeats " + name);
+    const bool layout = name == "FIELDS" || name == "SIZE" || name == "TYPE" || name == "COUNT";
+    if (layout && std::find(seen.begin(), seen.end(), "POINTS") != seen.end())
+      header.fail(name + " after POINTS in the PCD header");
+    seen.push_back(name);
     std::vector<std::string_view> values;
     while (tokens.next(token))
       values.push_back(token);
