@@ -307,7 +307,7 @@ checkPcdHeader(const std::string& path)
     if (std::find(seen.begin(), seen.end(), name) != seen.end())
       header.fail("the PCD header repeats " + name);
     const bool layout = name == "FIELDS" || name == "SIZE" || name == "TYPE" || name == "COUNT";
-    if (layout && std::find(seen.begin(), seen.end(), "POINTS") != seen.end())
+    if (layout && has_points)
       header.fail(name + " after POINTS in the PCD header");
     seen.push_back(name);
     std::vector<std::string_view> values;
