@@ -15,6 +15,7 @@
 #include <segmat/io/seg.h>
 
 #include "option_parser.h"
+#include "x_display.h"
 
 #include <pcl/console/print.h>
 
@@ -40,19 +41,10 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
-#include <fcntl.h>
-#include <signal.h>
-#include <sys/prctl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -417,69 +409,6 @@ parseSize(const std::string& text, int& width, int& height)
   return width <= 8192 && height <= 8192;
 }
 
-/// A private virtual X server for a run with no display; stopped (and reaped) when destroyed.
-class PrivateXvfb
-{
-public:
-  /// Starts Xvfb when DISPLAY is unset or empty: Xvfb picks a free display itself (-displayfd,
-  /// no race with other servers starting) and dies with this program (PR_SET_PDEATHSIG).
-  /// \throws segmat::Error when it cannot be started
-  PrivateXvfb()
-  {
-    const char* display = std::getenv("DISPLAY");
-    if (display && *display)
-      return;
-    int fds[2];
-    if (pipe(fds) != 0)
-      throw segmat::Error(std::string("cannot create a pipe: ") + std::strerror(errno));
-    pid_ = fork();
-    if (pid_ == 0) {
-      close(fds[0]);
-      prctl(PR_SET_PDEATHSIG, SIGTERM);
-      const int null = open("/dev/null", O_RDWR);
-      dup2(null, 0);
-      dup2(null, 1);
-      dup2(null, 2);
-      const std::string fd = std::to_string(fds[1]);
-      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "2048x2048x24", "-nolisten",
-             "tcp", static_cast<char*>(nullptr));
-      _exit(127);
-    }
-    close(fds[1]);
-    std::string number;
-    char c = 0;
-    while (pid_ > 0 && read(fds[0], &c, 1) == 1 && c != '\n')
-      number += c;
-    close(fds[0]);
-    if (number.empty() || number.find_first_not_of("0123456789") != std::string::npos) {
-      stop();
-      throw segmat::Error("no X display (DISPLAY is unset) and Xvfb could not be started: install "
-                          "Debian's xvfb, or set DISPLAY");
-    }
-    setenv("DISPLAY", (":" + number).c_str(), 1);
-  }
-  ~PrivateXvfb()
-  {
-    stop();
-  }
-  PrivateXvfb(const PrivateXvfb&) = delete;
-  PrivateXvfb&
-  operator=(const PrivateXvfb&) = delete;
-
-private:
-  void
-  stop()
-  {
-    if (pid_ <= 0)
-      return;
-    kill(pid_, SIGTERM);
-    while (waitpid(pid_, nullptr, 0) < 0 && errno == EINTR) {
-    }
-    pid_ = 0;
-  }
-  pid_t pid_ = 0;
-};
-
 int
 run(int argc, char** argv)
 {
@@ -546,7 +475,7 @@ run(int argc, char** argv)
   });
   // X only after the inputs are checked: bad input fails fast.
   try {
-    const PrivateXvfb xvfb;
+    const XDisplay display;
     render(shape, view, width, height, part_ids, boxes_path.empty() ? nullptr : &boxes, out_path);
   } catch (const std::exception& e) {
     throw segmat::Error(out_path + ": " + e.what());

@@ -19,12 +19,12 @@ import fixtures
 METRICS = ["RI", "CD", "HD", "GCE", "LCE"]
 
 # Stands in for segmat_mesh (SEGMAT_MESH): copies the reference run's outputs for a shape (no
-# computation), crashes on 246 or hangs on 41 when asked, and logs every call.
+# computation), crashes on 246 (after a colour-coded message, as VTK's log writes) or hangs on 41 when asked, and logs every call.
 FAKE_MESH = """#!/bin/sh
 name=$(basename "$1" .off)
 echo "$name" >> "{log}"
 case "{mode}:$name" in
-  crash-hang:246) kill -SEGV $$ ;;
+  crash-hang:246) printf '\\033[31mERR| vtkThing: bad X server\\033[0m\\n\\033[0m\\n' >&2; kill -SEGV $$ ;;
   crash-hang:41) exec sleep 600 ;;
 esac
 [ -n "{delay}" ] && sleep {delay}
@@ -164,7 +164,9 @@ class BatchTest(unittest.TestCase):
         shapes = {s["name"]: s for s in load_summary(out)["shapes"]}
         self.assertEqual(shapes["346"]["status"], "ok")
         self.assertEqual(shapes["246"]["status"], "failed")
-        self.assertIn("crashed (SIGSEGV)", shapes["246"]["error"])
+        # The reason is the last line with text, without the terminal colour codes around it.
+        self.assertTrue(shapes["246"]["error"].endswith(
+            ".sh crashed (SIGSEGV): ERR| vtkThing: bad X server"), shapes["246"]["error"])
         self.assertEqual(shapes["41"]["status"], "failed")
         self.assertIn("timeout", shapes["41"]["error"])
         self.assertFalse(os.path.exists(os.path.join(out, "246.seg")))

@@ -4,6 +4,7 @@
 the shape filling a sensible share of the picture, with no X server needed."""
 import os
 import shutil
+import subprocess
 import tempfile
 import unittest
 
@@ -112,6 +113,42 @@ class RenderTest(unittest.TestCase):
         self.assertEqual(status, 2)
         self.assertIn("--size", err)
 
+    def test_unusable_display_is_an_error_not_a_crash(self):
+        # VTK aborts on a display it cannot open; segmat_render checks the display first.
+        number = next(n for n in range(977, 1100) if not os.path.exists(f"/tmp/.X11-unix/X{n}"))
+        out = os.path.join(self.tmp, "nowhere.png")
+        status, _, err = fixtures.run([fixtures.program("segmat_render"), self.mesh,
+                                       self.prefix + ".seg", "-o", out], {"DISPLAY": f":{number}"})
+        self.assertEqual(status, 1, err)
+        self.assertIn(f"cannot draw on X display ':{number}'", err)
+        self.assertFalse(os.path.exists(out))
+
+    def test_one_connection_through_the_drawing(self):
+        # An X server resets when its last client leaves and drops the clients that arrive
+        # meanwhile; with -terminate it exits instead, so a program that lets go of the display
+        # before VTK takes it (a display check, say) finds no server at all.
+        read_end, write_end = os.pipe()
+        server = subprocess.Popen(
+            ["Xvfb", "-displayfd", str(write_end), "-screen", "0", "1024x768x24", "-nolisten",
+             "tcp", "-terminate"], pass_fds=(write_end,), stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL)
+        os.close(write_end)
+        with os.fdopen(read_end) as f:
+            number = f.readline().strip()
+        try:
+            self.assertTrue(number.isdigit())
+            out = os.path.join(self.tmp, "terminate.png")
+            status, _, err = fixtures.run([fixtures.program("segmat_render"), self.mesh,
+                                           self.prefix + ".seg", "-o", out, "--size", "200x150"],
+                                          {"DISPLAY": f":{number}"})
+            self.assertEqual(status, 0, err)
+            self.check_picture(out, 200, 150, {})
+            # The server went with the program's connection: nothing else held it.
+            self.assertEqual(server.wait(timeout=30), 0)
+        finally:
+            if server.poll() is None:
+                server.kill()
+                server.wait()
 
 if __name__ == "__main__":
     unittest.main()

@@ -82,12 +82,14 @@ def _programs(bin_dir, png):
 
 def _start_xvfb():
     """With no DISPLAY, one virtual X server for every picture of the run (segmat_render would
-    otherwise start one per shape); returns the process, or None."""
+    otherwise start one per shape); returns the process, or None. -noreset: a server that resets
+    when its last client leaves drops the connections that arrive meanwhile (the next shape's)."""
     if os.environ.get("DISPLAY") or not shutil.which("Xvfb"):
         return None
     read_end, write_end = os.pipe()
     server = subprocess.Popen(
-        ["Xvfb", "-displayfd", str(write_end), "-screen", "0", "2048x2048x24", "-nolisten", "tcp"],
+        ["Xvfb", "-displayfd", str(write_end), "-screen", "0", "2048x2048x24", "-nolisten", "tcp",
+         "-noreset"],
         pass_fds=(write_end,), stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
         stderr=subprocess.DEVNULL, start_new_session=True, preexec_fn=_die_with_parent)
     os.close(write_end)

@@ -4,6 +4,7 @@
 memory limit fails this shape only), outputs published atomically, one record per shape."""
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -39,6 +40,7 @@ def _child_env():
 
 
 # Messages of a program that ran out of address space (C++, the loader, glibc).
+_TERMINAL_CODES = re.compile(r"\x1b\[[0-9;]*[A-Za-z]")
 _MEMORY_SIGNS = ("bad_alloc", "memory", "failed to map", "cannot allocate")
 
 
@@ -115,7 +117,9 @@ class Runner:
                              f"{self.options.timeout:g} s (--timeout)")
         if proc.returncode == 0:
             return stdout, seconds, peak_mb
-        last = [line for line in stderr.strip().splitlines() if line.strip()]
+        # VTK's log colours its lines for a terminal: the reason is the last line with text.
+        plain = _TERMINAL_CODES.sub("", stderr)
+        last = [line for line in plain.strip().splitlines() if line.strip()]
         detail = last[-1].strip() if last else "no message"
         if proc.returncode < 0:
             name = signal.Signals(-proc.returncode).name
