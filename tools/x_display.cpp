@@ -51,8 +51,8 @@ connect(const std::string& name, std::string& fault)
 
 /// Starts Xvfb, which picks a free display itself (-displayfd: no race with other servers
 /// starting), does not reset when a client leaves (-noreset) and dies with this program
-/// (PR_SET_PDEATHSIG). Returns its pid and sets `number`;
-/// `number` stays empty when it did not start.
+/// (PR_SET_PDEATHSIG). Returns its pid and sets `number`, which stays empty when it did not
+/// start.
 pid_t
 startXvfb(std::string& number)
 {
@@ -99,17 +99,18 @@ XDisplay::XDisplay()
   for (int attempt = 0; attempt < 3; ++attempt) {
     std::string number;
     server_ = startXvfb(number);
-    if (number.empty()) {
+    if (number.empty()) { // not installed, or it failed at once: starting it again will not do
+      stopServer();
       fault = "Xvfb did not start: install Debian's xvfb, or set DISPLAY";
-    } else {
-      const std::string name = ":" + number;
-      connection_ = connect(name, fault);
-      if (connection_) {
-        setenv("DISPLAY", name.c_str(), 1);
-        return;
-      }
-      fault = "the private Xvfb on " + name + ": " + fault;
+      break;
     }
+    const std::string name = ":" + number;
+    connection_ = connect(name, fault);
+    if (connection_) {
+      setenv("DISPLAY", name.c_str(), 1);
+      return;
+    }
+    fault = "the private Xvfb on " + name + ": " + fault;
     stopServer();
   }
   throw segmat::Error("no X display (DISPLAY is unset) and " + fault);

@@ -19,7 +19,8 @@ import fixtures
 METRICS = ["RI", "CD", "HD", "GCE", "LCE"]
 
 # Stands in for segmat_mesh (SEGMAT_MESH): copies the reference run's outputs for a shape (no
-# computation), crashes on 246 (after a colour-coded message, as VTK's log writes) or hangs on 41 when asked, and logs every call.
+# computation), crashes on 246 (after a colour-coded message, as VTK's log writes) or hangs on
+# 41 when asked, and logs every call.
 FAKE_MESH = """#!/bin/sh
 name=$(basename "$1" .off)
 echo "$name" >> "{log}"

@@ -150,5 +150,6 @@ class RenderTest(unittest.TestCase):
                 server.kill()
                 server.wait()
 
+
 if __name__ == "__main__":
     unittest.main()

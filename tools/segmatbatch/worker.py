@@ -39,8 +39,9 @@ def _child_env():
     return dict(os.environ, OMP_NUM_THREADS=os.environ.get("OMP_NUM_THREADS", "1"))
 
 
-# Messages of a program that ran out of address space (C++, the loader, glibc).
+# Terminal colour codes, which VTK's log puts around its lines.
 _TERMINAL_CODES = re.compile(r"\x1b\[[0-9;]*[A-Za-z]")
+# Messages of a program that ran out of address space (C++, the loader, glibc).
 _MEMORY_SIGNS = ("bad_alloc", "memory", "failed to map", "cannot allocate")
 
 
@@ -117,7 +118,7 @@ class Runner:
                              f"{self.options.timeout:g} s (--timeout)")
         if proc.returncode == 0:
             return stdout, seconds, peak_mb
-        # VTK's log colours its lines for a terminal: the reason is the last line with text.
+        # The reason is the last line with text, without colour codes.
         plain = _TERMINAL_CODES.sub("", stderr)
         last = [line for line in plain.strip().splitlines() if line.strip()]
         detail = last[-1].strip() if last else "no message"
