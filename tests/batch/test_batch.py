@@ -68,7 +68,8 @@ class BatchTest(unittest.TestCase):
         self.assertEqual(self.status, 0, self.err)
         summary = load_summary(self.single)
         self.assertEqual([s["name"] for s in summary["shapes"]], fixtures.MODELS)
-        self.assertEqual(summary["counts"], {"shapes": 3, "ok": 3, "failed": 0})
+        self.assertEqual(summary["counts"],
+                         {"shapes": 3, "ok": 3, "failed": 0, "pictures_failed": 0})
         for shape in summary["shapes"]:
             name = shape["name"]
             labels = fixtures.read_labels(os.path.join(self.single, name + ".seg"))
@@ -187,6 +188,38 @@ class BatchTest(unittest.TestCase):
         (shape,) = load_summary(out)["shapes"]
         self.assertEqual(shape["status"], "failed")
         self.assertIn("out of memory (--max-memory 20 MB)", shape["error"])
+
+    def test_picture_that_cannot_be_drawn_leaves_the_shape_segmented(self):
+        fake, calls = self.fake_mesh("fast")
+        out = os.path.join(self.tmp, "nodisplay")
+        number = next(n for n in range(977, 1100) if not os.path.exists(f"/tmp/.X11-unix/X{n}"))
+        status, _, err = self.batch(self.psb, "-o", out, "--shard", "0/3",
+                                    env={"SEGMAT_MESH": fake, "DISPLAY": f":{number}"})
+        self.assertEqual(status, 0, err)
+        self.assertIn("1 segmented shapes have no picture", err)
+        summary = load_summary(out)
+        self.assertEqual(summary["counts"],
+                         {"shapes": 1, "ok": 1, "failed": 0, "pictures_failed": 1})
+        (shape,) = summary["shapes"]
+        self.assertIn(f"cannot draw on X display ':{number}'", shape["picture_error"])
+        self.assertEqual(shape["outputs"], ["41.ply", "41.seg"])
+        self.assertIsNotNone(shape["metrics"])  # scored all the same
+        with open(os.path.join(out, "summary.csv")) as f:
+            self.assertIn("cannot draw on X display", next(csv.DictReader(f))["picture_error"])
+        with open(os.path.join(out, "report.html")) as f:
+            self.assertIn("1 without picture", f.read())
+        # A plain rerun keeps the shape; --retry-failed segments it again and draws it.
+        status, _, err = self.batch(self.psb, "-o", out, "--shard", "0/3",
+                                    env={"SEGMAT_MESH": fake, "DISPLAY": f":{number}"})
+        self.assertEqual((status, load_summary(out)["counts"]["pictures_failed"]), (0, 1), err)
+        status, _, err = self.batch(self.psb, "-o", out, "--shard", "0/3", "--retry-failed",
+                                    env={"SEGMAT_MESH": fake, "DISPLAY": ""})
+        self.assertEqual(status, 0, err)
+        (shape,) = load_summary(out)["shapes"]
+        self.assertEqual(shape["picture_error"], "")
+        self.assertIn("41.png", shape["outputs"])
+        with open(calls) as f:
+            self.assertEqual(f.read().split(), ["41", "41"])
 
     def test_killed_run_restarts_without_redoing_finished_shapes(self):
         slow, first_log = self.fake_mesh("slow", delay="2")

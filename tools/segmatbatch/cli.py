@@ -24,6 +24,7 @@ one PATH [TRUTH.seg ...] per line, or a PSB folder: off/N.off + seg/Benchmark/N/
 its own processes (segmat_mesh or segmat_cloud, segmat_render, segmat_eval), and writes into OUT:
 NAME.seg (mesh) or NAME.labels + NAME.pcd (cloud), NAME.ply, NAME.png, shapes/NAME.json, and
 summary.json, summary.csv and report.html. A rerun skips the shapes finished before (resume).
+A picture that cannot be drawn does not fail its shape (the summary says why it is missing).
 Exit status: 0 every shape segmented, 1 some failed (see the summary), 2 bad usage or input."""
 
 
@@ -43,7 +44,8 @@ def _parser():
     p.add_argument("--no-png", action="store_true", help="no pictures (no segmat_render)")
     p.add_argument("--png-size", default="480x360", metavar="WxH", help="picture size")
     p.add_argument("--retry-failed", action="store_true",
-                   help="run again the shapes that failed before (finished ones are kept)")
+                   help="run again the shapes that failed before, and those whose picture "
+                        "could not be drawn (finished ones are kept)")
     p.add_argument("--no-resume", action="store_true", help="run every shape again")
     p.add_argument("--merge", action="store_true",
                    help="combine shard outputs (INPUT... are their OUT folders) into OUT")
@@ -135,7 +137,9 @@ def run(args, bin_dir):
     todo, kept = [], []
     for shape in shapes:
         record = None if args.no_resume else worker.read_record(out, shape.name)
-        if record and (record["status"] == "ok" or not args.retry_failed):
+        redo = record and args.retry_failed and (record["status"] != "ok"
+                                                 or record.get("picture_error"))
+        if record and not redo:
             kept.append(record)
         else:
             todo.append(shape)
@@ -186,6 +190,11 @@ def _finish(out, records, run_facts):
     summary.write(out, result)
     report.write(out, result)
     counts = result["counts"]
+    unpictured = [r for r in result["shapes"] if r["status"] == "ok" and r.get("picture_error")]
+    if unpictured:
+        print(f"segmat_batch: {len(unpictured)} segmented shapes have no picture (first: "
+              f"{unpictured[0]['name']}: {unpictured[0]['picture_error']}); --retry-failed "
+              "draws them again", file=sys.stderr)
     print(f"segmat_batch: {counts['ok']} of {counts['shapes']} shapes segmented, "
           f"{counts['failed']} failed; {os.path.join(out, 'report.html')}", file=sys.stderr)
     return 0 if counts["failed"] == 0 else 1

@@ -56,8 +56,13 @@ class Progress:
                 self.stream.write(f"\r[{bar}] {self._status()}\033[K")
                 if record["status"] != "ok":
                     self.stream.write(f"\n  {record['name']}: {record['error']}\n")
+                elif record.get("picture_error"):
+                    self.stream.write(f"\n  {record['name']}: no picture: "
+                                      f"{record['picture_error']}\n")
             else:
                 what = "ok" if record["status"] == "ok" else "FAILED: " + record["error"]
+                if record["status"] == "ok" and record.get("picture_error"):
+                    what += ", no picture: " + record["picture_error"]
                 self._line(f"[{self.done}/{self.total}] {record['name']} {what} "
                            f"({record['seconds']:.1f} s) | {self._status()}")
             self.stream.flush()

@@ -73,18 +73,21 @@ def _metrics_table(summary):
 
 
 def _failures(summary):
-    failed = [r for r in summary["shapes"] if r["status"] != "ok"]
-    if not failed:
+    items = [f"<li><b>{html.escape(r['name'])}</b>: {html.escape(r['error'])}</li>"
+             for r in summary["shapes"] if r["status"] != "ok"]
+    items += [f"<li><b>{html.escape(r['name'])}</b>: segmented, no picture: "
+              f"{html.escape(r['picture_error'])}</li>"
+              for r in summary["shapes"] if r["status"] == "ok" and r.get("picture_error")]
+    if not items:
         return "<p>None.</p>"
-    items = "".join(f"<li><b>{html.escape(r['name'])}</b>: {html.escape(r['error'])}</li>"
-                    for r in failed)
-    return f'<ul id="failures">{items}</ul>'
+    return f'<ul id="failures">{"".join(items)}</ul>'
 
 
 def _thumbnail(out_dir, record):
     path = os.path.join(out_dir, record["name"] + ".png")
     if record["status"] != "ok" or not os.path.isfile(path):
-        return '<td class="t muted" data-v="">none</td>'
+        reason = html.escape(record.get("picture_error", ""), quote=True)
+        return f'<td class="t muted" data-v="" title="{reason}">none</td>'
     with open(path, "rb") as f:
         data = base64.b64encode(f.read()).decode("ascii")
     return (f'<td class="t" data-v=""><img class="thumb" alt="{html.escape(record["name"])}" '
@@ -121,7 +124,8 @@ def html_text(out_dir, summary, title="segmat batch report"):
 <html lang="en"><head><meta charset="utf-8"><title>{html.escape(title)}</title>
 <style>{_STYLE}</style></head><body>
 <h1>{html.escape(title)}</h1>
-<p id="counts">{counts['shapes']} shapes: {counts['ok']} segmented, {counts['failed']} failed.
+<p id="counts">{counts['shapes']} shapes: {counts['ok']} segmented, {counts['failed']} failed{
+    f", {counts['pictures_failed']} without picture" if counts.get('pictures_failed') else ""}.
 <span class=muted>{facts}</span></p>
 <h2>PSB metrics</h2>{_metrics_table(summary)}
 <h2>Failures</h2>{_failures(summary)}

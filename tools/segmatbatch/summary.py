@@ -45,9 +45,10 @@ def build(records, run):
     """The summary.json object: run facts, counts, shapes (sorted by name), metrics."""
     records = sorted(records, key=lambda r: inputs.sort_key(r["name"]))
     failed = [r for r in records if r["status"] != "ok"]
+    unpictured = [r for r in records if r["status"] == "ok" and r.get("picture_error")]
     summary = {"run": run,
                "counts": {"shapes": len(records), "ok": len(records) - len(failed),
-                          "failed": len(failed)},
+                          "failed": len(failed), "pictures_failed": len(unpictured)},
                "shapes": records}
     summary.update(aggregate(records))
     return summary
@@ -64,13 +65,13 @@ def _stage_names(records):
 
 def csv_text(summary):
     """One row per shape: name, category, status, parts, seconds, peak memory, the five main
-    PSB metrics, seconds per stage, error."""
+    PSB metrics, seconds per stage, error, picture error."""
     records = summary["shapes"]
     stages = _stage_names(records)
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(["name", "category", "kind", "status", "parts", "seconds", "peak_memory_mb"]
-                    + MAIN_METRICS + ["seconds_" + s for s in stages] + ["error"])
+                    + MAIN_METRICS + ["seconds_" + s for s in stages] + ["error", "picture_error"])
     for r in records:
         metrics = r.get("metrics") or {}
         writer.writerow([r["name"], r.get("category", ""), r.get("kind", ""), r["status"],
@@ -78,7 +79,7 @@ def csv_text(summary):
                          _cell(r.get("peak_memory_mb"))]
                         + [_cell(metrics.get(k)) for k in MAIN_METRICS]
                         + [_cell(r.get("stages", {}).get(s)) for s in stages]
-                        + [r.get("error", "")])
+                        + [r.get("error", ""), r.get("picture_error", "")])
     return out.getvalue()
 
 

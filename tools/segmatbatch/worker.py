@@ -48,6 +48,10 @@ _MEMORY_SIGNS = ("bad_alloc", "memory", "failed to map", "cannot allocate")
 class StepFailed(Exception):
     """A program failed: the message is the shape's error."""
 
+    def __init__(self, message, timed_out=False):
+        super().__init__(message)
+        self.timed_out = timed_out
+
 
 class Options:
     """What every shape is run with."""
@@ -115,7 +119,7 @@ class Runner:
             raise StepFailed("stopped")
         if timed_out.is_set():
             raise StepFailed(f"timeout: {program} still running after the shape's "
-                             f"{self.options.timeout:g} s (--timeout)")
+                             f"{self.options.timeout:g} s (--timeout)", timed_out=True)
         if proc.returncode == 0:
             return stdout, seconds, peak_mb
         # The reason is the last line with text, without colour codes.
@@ -141,18 +145,14 @@ class Runner:
         shutil.rmtree(work, ignore_errors=True)
         os.makedirs(work)
         record = {"name": shape.name, "input": os.path.abspath(shape.path), "kind": shape.kind,
-                  "category": shape.category, "status": "ok", "error": "", "parts": None,
+                  "category": shape.category, "status": "ok", "error": "", "picture_error": "",
+                  "parts": None,
                   "seconds": None, "stages": {}, "peak_memory_mb": None, "metrics": None,
                   "outputs": []}
         try:
             peak = self._segment(shape, work, deadline, record)
             if self.options.png:
-                _, seconds, _ = self._run(
-                    [self.options.programs["segmat_render"], shape.path,
-                     os.path.join(work, _labels_file(shape)), "-o",
-                     os.path.join(work, shape.name + ".png"), "--size", self.options.png_size],
-                    deadline)
-                record["stages"]["render"] = round(seconds, 4)
+                self._draw(shape, work, deadline, record)
             if shape.truths and shape.kind == "mesh":
                 stdout, seconds, _ = self._run(
                     [self.options.programs["segmat_eval"], "--mesh", shape.path, "--pred",
@@ -179,6 +179,22 @@ class Runner:
         write_json_atomically(os.path.join(self.out_dir, RECORDS, shape.name + ".json"), record)
         shutil.rmtree(work, ignore_errors=True)
         return record
+
+    def _draw(self, shape, work, deadline, record):
+        """segmat_render. A picture that cannot be drawn (no usable display, say) leaves the
+        shape segmented, with the reason in picture_error; a timeout or a stop still ends it."""
+        try:
+            _, seconds, _ = self._run(
+                [self.options.programs["segmat_render"], shape.path,
+                 os.path.join(work, _labels_file(shape)), "-o",
+                 os.path.join(work, shape.name + ".png"), "--size", self.options.png_size],
+                deadline)
+        except StepFailed as e:
+            if self._stopping or e.timed_out:
+                raise
+            record["picture_error"] = str(e)
+            return
+        record["stages"]["render"] = round(seconds, 4)
 
     def _segment(self, shape, work, deadline, record):
         """segmat_mesh or segmat_cloud with --json; fills parts and stage seconds; returns the
