@@ -202,6 +202,8 @@ class BatchTest(unittest.TestCase):
                          {"shapes": 1, "ok": 1, "failed": 0, "pictures_failed": 1})
         (shape,) = summary["shapes"]
         self.assertIn(f"cannot draw on X display ':{number}'", shape["picture_error"])
+        # The message names the picture where it would have gone, not the temporary folder.
+        self.assertIn(os.path.join(out, "41.png") + ":", shape["picture_error"])
         self.assertEqual(shape["outputs"], ["41.ply", "41.seg"])
         self.assertIsNotNone(shape["metrics"])  # scored all the same
         with open(os.path.join(out, "summary.csv")) as f:

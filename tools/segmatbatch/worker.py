@@ -166,7 +166,7 @@ class Runner:
                 shutil.rmtree(work, ignore_errors=True)
                 return None
             record["status"] = "failed"
-            record["error"] = str(e)
+            record["error"] = self._public(str(e), work)
         except (ValueError, IndexError, KeyError) as e:  # a program printed something unexpected
             record["status"] = "failed"
             record["error"] = f"unreadable program output: {e}"
@@ -180,6 +180,11 @@ class Runner:
         shutil.rmtree(work, ignore_errors=True)
         return record
 
+    def _public(self, message, work):
+        """A program's message with its temporary output folder named as OUT, where the
+        outputs go (a failed shape's never arrive there)."""
+        return message.replace(work.rstrip(os.sep) + os.sep, self.out_dir.rstrip(os.sep) + os.sep)
+
     def _draw(self, shape, work, deadline, record):
         """segmat_render. A picture that cannot be drawn (no usable display, say) leaves the
         shape segmented, with the reason in picture_error; a timeout or a stop still ends it."""
@@ -192,7 +197,7 @@ class Runner:
         except StepFailed as e:
             if self._stopping or e.timed_out:
                 raise
-            record["picture_error"] = str(e)
+            record["picture_error"] = self._public(str(e), work)
             return
         record["stages"]["render"] = round(seconds, 4)
 
