@@ -146,9 +146,8 @@ class Runner:
         os.makedirs(work)
         record = {"name": shape.name, "input": os.path.abspath(shape.path), "kind": shape.kind,
                   "category": shape.category, "status": "ok", "error": "", "picture_error": "",
-                  "parts": None,
-                  "seconds": None, "stages": {}, "peak_memory_mb": None, "metrics": None,
-                  "outputs": []}
+                  "parts": None, "seconds": None, "stages": {}, "peak_memory_mb": None,
+                  "metrics": None, "outputs": []}
         try:
             peak = self._segment(shape, work, deadline, record)
             if self.options.png:
