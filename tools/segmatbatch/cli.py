@@ -190,11 +190,12 @@ def _finish(out, records, run_facts):
     summary.write(out, result)
     report.write(out, result)
     counts = result["counts"]
-    unpictured = [r for r in result["shapes"] if r["status"] == "ok" and r.get("picture_error")]
-    if unpictured:
-        print(f"segmat_batch: {len(unpictured)} segmented shapes have no picture (first: "
-              f"{unpictured[0]['name']}: {unpictured[0]['picture_error']}); --retry-failed "
-              "draws them again", file=sys.stderr)
+    if counts["pictures_failed"]:
+        first = next(r for r in result["shapes"]
+                     if r["status"] == "ok" and r.get("picture_error"))
+        print(f"segmat_batch: {counts['pictures_failed']} segmented shapes have no picture "
+              f"(first: {first['name']}: {first['picture_error']}); --retry-failed draws them "
+              "again", file=sys.stderr)
     print(f"segmat_batch: {counts['ok']} of {counts['shapes']} shapes segmented, "
           f"{counts['failed']} failed; {os.path.join(out, 'report.html')}", file=sys.stderr)
     return 0 if counts["failed"] == 0 else 1
