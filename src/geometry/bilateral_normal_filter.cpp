@@ -94,10 +94,19 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
     if (edge_pairs.empty())
       return settings.range_sigma;
     // Squared: the square root is monotonic, so it is taken of the median alone.
-    for (std::size_t e = 0; e < edge_pairs.size(); ++e)
+    const double floor2 = settings.range_sigma * settings.range_sigma;
+    std::size_t above = 0;
+    for (std::size_t e = 0; e < edge_pairs.size(); ++e) {
       chords[e] = (normals[edge_pairs[e].first] - normals[edge_pairs[e].second]).squaredNorm();
-    std::nth_element(chords.begin(), chords.begin() + chords.size() / 2, chords.end());
-    return std::max(settings.range_sigma, std::sqrt(chords[chords.size() / 2]));
+      above += chords[e] > floor2;
+    }
+    // Once the noise is gone the median lies below the floor: counting tells so without the
+    // selection, and the floor is the answer either way.
+    const std::size_t middle = chords.size() / 2;
+    if (above < chords.size() - middle)
+      return settings.range_sigma;
+    std::nth_element(chords.begin(), chords.begin() + middle, chords.end());
+    return std::max(settings.range_sigma, std::sqrt(chords[middle]));
   };
   const double still = 1.0 - std::cos(settings.still_degrees * M_PI / 180.0);
 

@@ -106,7 +106,9 @@ neighbourhoodPca(const std::vector<Eigen::Vector3f>& points, const pcl::Indices&
   }
   Eigen::Matrix3d cov;
   cov << xx, xy, xz, xy, yy, yz, xz, yz, zz;
-  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov / double(nn.size()));
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(cov / double(nn.size()));
+  return solver;
 }
 
 LocalShape

@@ -19,8 +19,11 @@ namespace detail {
 namespace {
 
 /// The rows of sidedHeightFit's table: 15 monomials u^a v^b (a + b <= 4), then the height
-/// times each of the basis 1, u, v, u², uv, v².
+/// times each of the basis 1, u, v, u², uv, v²; one row of padding makes each column whole
+/// SIMD packets of doubles, so that the weighted column sums vectorise without a remainder.
 constexpr int kMoments = 21;
+constexpr int kTableRows = 22;
+using TableColumn = Eigen::Matrix<double, kTableRows, 1>;
 
 /// A fit to dense samples takes at most this many times the working fit's neighbours.
 constexpr int kDenseFitCap = 8;
@@ -29,6 +32,41 @@ constexpr int kDenseFitCap = 8;
 constexpr int kProduct[6][6] = {{0, 1, 2, 3, 4, 5},    {1, 3, 4, 6, 7, 8},
                                 {2, 4, 5, 7, 8, 9},    {3, 6, 7, 10, 11, 12},
                                 {4, 7, 8, 11, 12, 13}, {5, 8, 9, 12, 13, 14}};
+
+/// Solves normal · x = rhs in place (x returned in \a rhs) for a symmetric positive definite
+/// 6 × 6 \a normal, by a Cholesky factorisation written out: Eigen's general one costs as much
+/// as the rest of a refit. False when \a normal is not positive definite.
+bool
+solveSmallCholesky(Eigen::Matrix<double, 6, 6>& normal, Eigen::Matrix<double, 6, 1>& rhs)
+{
+  Eigen::Matrix<double, 6, 6>& l = normal; // the lower triangle becomes the factor
+  for (int j = 0; j < 6; ++j) {
+    double d = l(j, j);
+    for (int k = 0; k < j; ++k)
+      d -= l(j, k) * l(j, k);
+    if (!(d > 0.0))
+      return false;
+    const double root = std::sqrt(d);
+    l(j, j) = root;
+    for (int i = j + 1; i < 6; ++i) {
+      double v = l(i, j);
+      for (int k = 0; k < j; ++k)
+        v -= l(i, k) * l(j, k);
+      l(i, j) = v / root;
+    }
+  }
+  for (int i = 0; i < 6; ++i) { // L y = rhs
+    for (int k = 0; k < i; ++k)
+      rhs[i] -= l(i, k) * rhs[k];
+    rhs[i] /= l(i, i);
+  }
+  for (int i = 5; i >= 0; --i) { // Lᵀ x = y
+    for (int k = i + 1; k < 6; ++k)
+      rhs[i] -= l(k, i) * rhs[k];
+    rhs[i] /= l(i, i);
+  }
+  return true;
+}
 
 /// Where point \a at lies on its own side of the surface: a quadratic height field over the
 /// neighbourhood's PCA tangent plane, fitted with spatial weights exp(−d²/support²) times
@@ -42,38 +80,39 @@ sidedHeightFit(const Eigen::Vector3f& at, const std::vector<Eigen::Vector3f>& po
                const pcl::Indices& nn, const std::vector<float>& d2, double support, double band)
 {
   const auto pca = neighbourhoodPca(points, nn);
-  const Eigen::Vector3d n = pca.eigenvectors().col(0), e1 = pca.eigenvectors().col(1),
-                        e2 = pca.eigenvectors().col(2);
+  const Eigen::Vector3d n = pca.eigenvectors().col(0),
+                        e1 = pca.eigenvectors().col(1) / support,
+                        e2 = pca.eigenvectors().col(2) / support;
   const Eigen::Vector3d origin = at.cast<double>();
   const Eigen::Index m = static_cast<Eigen::Index>(nn.size());
   // The fit runs for every sample in every pass. Each refit is a weighted sum over the
   // neighbours of their monomials u^a v^b (a + b <= 4: the normal matrix) and of their heights
   // times the basis (the right-hand side), so the monomials are tabulated once per sample and
-  // every refit is one vectorised exp and one matrix-vector product. The weights need no more
-  // than float precision; the sums are in double. Per-thread buffers.
-  thread_local Eigen::Matrix<double, kMoments, Eigen::Dynamic> table;
+  // every refit is one vectorised exp and one pass of fixed-size column sums. The weights need
+  // no more than float precision; the sums are in double. Per-thread buffers.
+  thread_local Eigen::Matrix<double, kTableRows, Eigen::Dynamic> table;
   thread_local Eigen::ArrayXd height;
   thread_local Eigen::ArrayXf spatial, exponent;
-  thread_local Eigen::VectorXd fitted, weight;
-  table.resize(kMoments, m);
-  height.resize(m);
-  spatial.resize(m);
-  exponent.resize(m);
-  fitted.resize(m);
-  weight.resize(m);
+  if (table.cols() < m) { // grown, never shrunk: no allocation per sample
+    table.resize(kTableRows, m);
+    height.resize(m);
+    spatial.resize(m);
+    exponent.resize(m);
+  }
   for (Eigen::Index a = 0; a < m; ++a) {
     const Eigen::Vector3d d = points[nn[std::size_t(a)]].cast<double>() - origin;
-    const double u = d.dot(e1) / support, v = d.dot(e2) / support; // unit-free: well posed
+    const double u = d.dot(e1), v = d.dot(e2); // unit-free: well posed
     const double h = d.dot(n);
     const double uu = u * u, uv = u * v, vv = v * v;
     table.col(a) << 1.0, u, v, uu, uv, vv,           // the basis
         uu * u, uu * v, u * vv, vv * v,              // degree 3
         uu * uu, uu * uv, uu * vv, uv * vv, vv * vv, // degree 4
-        h, h * u, h * v, h * uu, h * uv, h * vv;     // the height times the basis
+        h, h * u, h * v, h * uu, h * uv, h * vv,     // the height times the basis
+        0.0;                                         // padding
     height[a] = h;
     spatial[a] = float(-double(d2[std::size_t(a)]) / (support * support));
   }
-  spatial = spatial.exp();
+  spatial.head(m) = spatial.head(m).exp();
   // From the plane through the point, with a wide residual band that narrows: a narrow band at
   // once would leave too few neighbours on a curved surface to fix six coefficients. A small
   // ridge on the curvature terms keeps the fit posed where few neighbours remain.
@@ -81,14 +120,15 @@ sidedHeightFit(const Eigen::Vector3f& at, const std::vector<Eigen::Vector3f>& po
   const double bands[] = {4.0 * band, 2.0 * band, band, band};
   for (int round = 0; round < 4; ++round) {
     const double inv_band2 = 1.0 / (2.0 * bands[round] * bands[round]);
-    if (round == 0)
-      fitted.setZero(); // the plane through the point
-    else
-      fitted.noalias() = table.topRows<6>().transpose() * coef;
-    exponent = (-(height - fitted.array()).square() * inv_band2).cast<float>();
-    exponent = exponent.exp(); // on its own, so that Eigen vectorises it
-    weight = (spatial * exponent).cast<double>();
-    const Eigen::Matrix<double, kMoments, 1> sum = table * weight;
+    for (Eigen::Index a = 0; a < m; ++a) { // residual from the fit (round 0: the plane)
+      const double r = height[a] - table.col(a).head<6>().dot(coef);
+      exponent[a] = float(-r * r * inv_band2);
+    }
+    exponent.head(m) = exponent.head(m).exp(); // on its own, so that Eigen vectorises it
+    TableColumn column_sum = TableColumn::Zero();
+    for (Eigen::Index a = 0; a < m; ++a)
+      column_sum.noalias() += double(spatial[a] * exponent[a]) * table.col(a);
+    const Eigen::Matrix<double, kMoments, 1> sum = column_sum.head<kMoments>();
     const double total = sum[0];
     if (!(total > 1e-6))
       break;
@@ -98,12 +138,10 @@ sidedHeightFit(const Eigen::Vector3f& at, const std::vector<Eigen::Vector3f>& po
         normal(i, j) = sum[kProduct[i][j]];
     for (int k = 3; k < 6; ++k)
       normal(k, k) += 1e-3 * total;
-    // The ridge keeps the curvature terms posed; LLT fails only where the neighbours fix no plane.
-    const Eigen::LLT<Eigen::Matrix<double, 6, 6>> llt(normal);
-    if (llt.info() != Eigen::Success)
-      break;
-    const Eigen::Matrix<double, 6, 1> next = llt.solve(sum.tail<6>());
-    if (!next.allFinite())
+    // The ridge keeps the curvature terms posed; Cholesky fails only where the neighbours fix
+    // no plane.
+    Eigen::Matrix<double, 6, 1> next = sum.tail<6>();
+    if (!solveSmallCholesky(normal, next) || !next.allFinite())
       break;
     coef = next;
   }
@@ -616,12 +654,16 @@ denoiseMeshSurface(std::vector<Eigen::Vector3d>& vertices,
     positions[i] = vertices[i].cast<float>();
   RingNeighbourhoods neighbourhoods(positions.size(), faces, k);
   neighbourhoods.update(positions);
+  const bool noisy = result.face_turn_degrees >= noisy_degrees;
+  // A noisy mesh reads every vertex's rings in each pass: gathered once, they serve the
+  // estimate too. A clean one reads only the estimate's few thousand.
+  if (noisy)
+    neighbourhoods.precompute();
   result.noise =
       estimateSurfaceNoise(positions, neighbourhoods, estimateStride(positions.size()), threads);
-  if (result.face_turn_degrees < noisy_degrees)
+  if (!noisy)
     return result; // clean: only the estimate, for the report
   const SurfaceDenoising found = result;
-  neighbourhoods.precompute();
   // The passes fit with a residual band of 1.5 σ̂ and round off whatever is smaller. Bilateral
   // normal filtering first, with σ_r as wide as the turn that the noise puts between adjacent
   // faces, removes most of the noise; the passes then fit with the band of what is left, and
