@@ -151,7 +151,7 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
     if (it == 0)
       result.range_sigma = range_sigma;
     const double inv_r = 1.0 / (2.0 * range_sigma * range_sigma);
-    // (Pairs with a face without normal get a weight that nothing reads.)
+    // (Pairs with a face without normal get a weight that multiplies its zero normal.)
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (long p = 0; p < long(lower_face.size()); ++p) {
       const double dr = (normals[lower_face[p]] - normals[upper_face[p]]).squaredNorm();
@@ -165,12 +165,8 @@ bilateralNormalFilter(std::vector<Eigen::Vector3d>& vertices,
       if (!has_normal[f])
         continue;
       Eigen::Vector3d sum = g.areas[f] * normals[f];
-      for (std::size_t a = first[f]; a < first[f + 1]; ++a) {
-        const int j = neighbours[a];
-        if (!has_normal[j])
-          continue;
-        sum += fixed[a] * exponent[pair[a]] * normals[j];
-      }
+      for (std::size_t a = first[f]; a < first[f + 1]; ++a)
+        sum += fixed[a] * exponent[pair[a]] * normals[neighbours[a]];
       if (sum.norm() > 0.0)
         next[f] = sum.normalized();
       turn[f] = 1.0 - next[f].dot(normals[f]);
