@@ -34,9 +34,9 @@ constexpr int kProduct[6][6] = {{0, 1, 2, 3, 4, 5},    {1, 3, 4, 6, 7, 8},
                                 {4, 7, 8, 11, 12, 13}, {5, 8, 9, 12, 13, 14}};
 
 /// Solves normal · x = rhs in place (x returned in \a rhs) for a symmetric positive definite
-/// 6 × 6 \a normal, by a Cholesky factorisation written out: Eigen's general one takes about
-/// three times as long at this size, and every refit solves one. False when \a normal is not
-/// positive definite.
+/// 6 × 6 \a normal, by a Cholesky factorisation written out: every refit solves one, and
+/// Eigen's LLT runs its general loops out of line even at this fixed size. False when
+/// \a normal is not positive definite.
 bool
 solveSmallCholesky(Eigen::Matrix<double, 6, 6>& normal, Eigen::Matrix<double, 6, 1>& rhs)
 {
