@@ -11,6 +11,7 @@
 #include <segmat/io/ma.h>
 #include <segmat/io/mesh.h>
 #include <segmat/io/seg.h>
+#include <segmat/medial/medial_mesh_estimation.h>
 #include <segmat/segmentation/mesh_segmentation.h>
 
 #include "box_output.h"
@@ -177,11 +178,14 @@ run(int argc, char** argv)
   seconds.emplace_back("write", progress.done());
 
   if (common.json) {
-    std::printf("{\"parts\": %zu, \"mat_computed\": %s, \"base_spheres\": %zu, "
+    const MedialMeshEstimationStatistics& mat = segmentation.getMatStatistics();
+    std::printf("{\"parts\": %zu, \"mat_computed\": %s, \"samples\": %zu, "
+                "\"initial_spheres\": %zu, \"base_spheres\": %zu, "
                 "\"structured_spheres\": %zu, \"noise\": {\"sigma\": %.6g, "
                 "\"remaining_sigma\": %.6g, \"passes\": %d}, "
                 "\"face_counts\": %s, \"seconds\": %s}\n",
                 parts.size(), segmentation.hasComputedMats() ? "true" : "false",
+                mat.voronoi.num_samples, mat.initial_spheres,
                 segmentation.getBaseMat()->numVertices(),
                 segmentation.getStructuredMat()->numVertices(), segmentation.getEstimatedNoise(),
                 segmentation.getRemainingNoise(), segmentation.getDenoisingPasses(),

@@ -8,6 +8,7 @@
 // signatures is a change here only.
 
 #include <segmat/common/stage_timing.h>
+#include <segmat/medial/medial_mesh_estimation.h>
 #include <segmat/segmentation/cloud_segmentation.h>
 #include <segmat/segmentation/mesh_segmentation.h>
 
@@ -157,6 +158,7 @@ struct RunInfo
   double cpp_seconds = 0.0; ///< wall time of the C++ segment() call
   bool mat_computed = false;
   std::size_t base_spheres = 0, structured_spheres = 0;
+  std::size_t samples = 0, initial_spheres = 0; ///< mesh: MeshSegmentation::getMatStatistics()
   bool cloud = false;  ///< the cloud path (noise_spacing applies)
   double noise_sigma = 0.0, noise_spacing = 0.0; ///< estimated, in the input's units
   double noise_remaining = 0.0; ///< left on the denoised surface (input's units)
@@ -171,6 +173,8 @@ segment(segmat::MeshSegmentation& s, std::vector<int>& labels, RunInfo& info)
     return false;
   info.stage_seconds = s.getStageSeconds();
   info.mat_computed = s.hasComputedMats();
+  info.samples = s.getMatStatistics().voronoi.num_samples;
+  info.initial_spheres = s.getMatStatistics().initial_spheres;
   info.base_spheres = s.getBaseMat() ? s.getBaseMat()->numVertices() : 0;
   info.structured_spheres = s.getStructuredMat() ? s.getStructuredMat()->numVertices() : 0;
   info.noise_sigma = s.getEstimatedNoise();

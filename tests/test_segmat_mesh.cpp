@@ -47,6 +47,8 @@ TEST(SegmatMesh, WritesSegAndPlyAndPrintsJson)
     EXPECT_GE(json.get<double>(std::string("seconds.") + stage), 0.0) << stage;
   EXPECT_EQ(json.get<double>("seconds.mat"), 0.0); // given, not computed
   EXPECT_FALSE(json.get<bool>("mat_computed"));
+  EXPECT_EQ(json.get<int>("samples"), 0); // nothing sampled
+  EXPECT_EQ(json.get<int>("initial_spheres"), 0);
   EXPECT_EQ(json.get<int>("base_spheres"), 2000);
 
   // Plain output says the same.
@@ -78,6 +80,11 @@ TEST(SegmatMesh, ComputesTheMedialMeshesWhenNotGiven)
   EXPECT_TRUE(json.get<bool>("mat_computed"));
   EXPECT_EQ(json.get<int>("base_spheres"), 2000);
   EXPECT_GE(json.get<int>("structured_spheres"), 15); // the estimator's lower bound
+  // Every one of teddy's 9548 vertices is a sample, within the default limit of 12000; the
+  // base MAT's 2000 spheres are simplified from the initial ones.
+  EXPECT_GE(json.get<int>("samples"), 9548);
+  EXPECT_LE(json.get<int>("samples"), 12000);
+  EXPECT_GT(json.get<int>("initial_spheres"), 2000);
   EXPECT_EQ(json.get<int>("parts"), 8);
   std::size_t total = 0;
   for (const auto& c : json.get_child("face_counts"))

@@ -18,7 +18,8 @@ def test_labels_equal_the_programs_on_teddy(teddy, teddy_cli, teddy_segmenter):
 def test_info_is_the_programs_json(teddy_cli, teddy_segmenter):
     _, cli_info, _ = teddy_cli
     info = teddy_segmenter[2]
-    for key in ("parts", "face_counts", "mat_computed", "base_spheres", "structured_spheres"):
+    for key in ("parts", "face_counts", "mat_computed", "samples", "initial_spheres",
+                "base_spheres", "structured_spheres"):
         assert info[key] == cli_info[key], key
     # Teddy is clean: nothing smoothed, nothing left.
     assert info["noise"] == {"sigma": pytest.approx(cli_info["noise"]["sigma"], rel=1e-5),

@@ -50,6 +50,13 @@ MeshSegmentation::dropComputedMats()
   tags_valid_ = false;
 }
 
+const MedialMeshEstimationStatistics&
+MeshSegmentation::getMatStatistics() const
+{
+  static const MedialMeshEstimationStatistics none;
+  return mats_computed_ ? estimation_->getStatistics() : none;
+}
+
 void
 MeshSegmentation::setInputMesh(const TriangleMesh::ConstPtr& mesh)
 {

@@ -25,6 +25,7 @@
 namespace segmat {
 
 class MedialMeshEstimation;
+struct MedialMeshEstimationStatistics;
 
 /** \brief End-to-end part segmentation of a triangle mesh with SEG-MAT (Lin et al., "SEG-MAT:
  * 3D Shape Segmentation Using Medial Axis Transform", IEEE TVCG 2022).
@@ -180,6 +181,14 @@ public:
   {
     return mats_computed_;
   }
+
+  /** \brief Sizes and seconds of the medial stage that computed the current medial meshes
+   * (MedialMeshEstimation::getStatistics()): among them the surface samples
+   * (`voronoi.num_samples`) and the initial spheres, which follow the shape and not the noise
+   * when denoising works (docs/noise.md). All zero while hasComputedMats() is false.
+   */
+  const MedialMeshEstimationStatistics&
+  getMatStatistics() const;
 
 
   /** \brief Segment the mesh.
