@@ -9,6 +9,7 @@
 #include <segmat/io/cloud.h>
 #include <segmat/io/colored_ply.h>
 #include <segmat/io/ma.h>
+#include <segmat/medial/medial_mesh_estimation.h>
 #include <segmat/segmentation/cloud_segmentation.h>
 
 #include "box_output.h"
@@ -111,10 +112,11 @@ run(int argc, char** argv)
              [&](const std::string& v) { applyDetailLevel(segmentation, v); });
   addCommonOptions(parser, common);
   parser.note("A noisy cloud needs no option: its noise is estimated and the points smoothed\n"
-              "(docs/noise.md). --json prints parts, point_counts, seconds per stage, noise\n"
-              "{sigma, spacing, passes} (estimated, in the file's units, with or without the\n"
-              "file's normals) and origin (what a cloud far from 0 was moved by; outputs\n"
-              "are written back in the file's frame).");
+              "(docs/noise.md). --json prints parts, point_counts, seconds per stage, the\n"
+              "medial mesh's samples and initial, base and structured spheres (0 with\n"
+              "--meso-skeleton), noise {sigma, spacing, remaining_sigma, passes} (estimated,\n"
+              "in the file's units, with or without the file's normals) and origin (what a\n"
+              "cloud far from 0 was moved by; outputs are written back in the file's frame).");
 
   if (!parser.parse(argc, argv))
     return kExitOk;
@@ -180,11 +182,16 @@ run(int argc, char** argv)
   seconds.emplace_back("write", write_seconds);
 
   if (common.json) {
+    const MedialMeshEstimationStatistics& mat = segmentation.getMatStatistics();
     std::printf("{\"parts\": %zu, \"point_counts\": %s, \"seconds\": %s, "
+                "\"samples\": %zu, \"initial_spheres\": %zu, \"base_spheres\": %zu, "
+                "\"structured_spheres\": %zu, "
                 "\"noise\": {\"sigma\": %.9g, \"spacing\": %.9g, \"remaining_sigma\": %.9g, "
                 "\"passes\": %d}, "
                 "\"origin\": [%.17g, %.17g, %.17g]}\n",
                 parts.size(), jsonSizes(parts).c_str(), jsonSeconds(seconds).c_str(),
+                mat.voronoi.num_samples, mat.initial_spheres, mat.base_spheres,
+                mat.structured_spheres,
                 segmentation.getEstimatedNoise(), segmentation.getEstimatedSpacing(),
                 segmentation.getRemainingNoise(), segmentation.getDenoisingPasses(),
                 loaded.origin.x(), loaded.origin.y(), loaded.origin.z());

@@ -158,7 +158,7 @@ struct RunInfo
   double cpp_seconds = 0.0; ///< wall time of the C++ segment() call
   bool mat_computed = false;
   std::size_t base_spheres = 0, structured_spheres = 0;
-  std::size_t samples = 0, initial_spheres = 0; ///< mesh: MeshSegmentation::getMatStatistics()
+  std::size_t samples = 0, initial_spheres = 0; ///< getMatStatistics() of either path
   bool cloud = false;  ///< the cloud path (noise_spacing applies)
   double noise_sigma = 0.0, noise_spacing = 0.0; ///< estimated, in the input's units
   double noise_remaining = 0.0; ///< left on the denoised surface (input's units)
@@ -195,6 +195,8 @@ segment(CloudSegmentation& s, std::vector<int>& labels, RunInfo& info)
   info.mat_computed = true;
   info.base_spheres = s.getBaseMat() ? s.getBaseMat()->numVertices() : 0;
   info.structured_spheres = s.getStructuredMat() ? s.getStructuredMat()->numVertices() : 0;
+  info.samples = s.getMatStatistics().voronoi.num_samples;
+  info.initial_spheres = s.getMatStatistics().initial_spheres;
   info.cloud = true;
   info.noise_sigma = s.getEstimatedNoise();
   info.noise_spacing = s.getEstimatedSpacing();

@@ -233,11 +233,10 @@ public:
     noise["remaining_sigma"] = last.noise_remaining;
     noise["passes"] = last.denoising_passes;
     d["noise"] = noise;
-    if (!last.cloud) {
+    d["samples"] = last.samples;
+    d["initial_spheres"] = last.initial_spheres;
+    if (!last.cloud)
       d["mat_computed"] = last.mat_computed;
-      d["samples"] = last.samples;
-      d["initial_spheres"] = last.initial_spheres;
-    }
     return std::move(d);
   }
 

@@ -126,6 +126,12 @@ TEST(SegmatCloud, WritesPcdPlyLabelsAndPrintsJson)
   EXPECT_GT(json.get<double>("noise.sigma"), 0.0);
   EXPECT_LT(json.get<double>("noise.sigma"), 0.1 * json.get<double>("noise.spacing"));
   EXPECT_EQ(json.get<int>("noise.passes"), 0);
+  // Every finite point is a working point and a Voronoi sample (the working size is 20000);
+  // the base MAT's 2000 spheres come from the initial ones.
+  EXPECT_EQ(json.get<int>("samples"), 7998);
+  EXPECT_GT(json.get<int>("initial_spheres"), 2000);
+  EXPECT_EQ(json.get<int>("base_spheres"), 2000);
+  EXPECT_GE(json.get<int>("structured_spheres"), 15);
 
   // Plain output, and the same labels again (deterministic), also with estimated normals.
   const test::ProgramRun plain =

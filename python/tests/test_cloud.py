@@ -12,7 +12,8 @@ def test_labels_equal_the_programs_on_a_psb_dev_cloud(psb_cloud):
     assert labels.dtype == np.int32 and labels.shape == (len(points),)
     np.testing.assert_array_equal(labels, cli_labels)
     info = segmenter.info
-    for key in ("parts", "point_counts"):
+    for key in ("parts", "point_counts", "samples", "initial_spheres", "base_spheres",
+                "structured_spheres"):
         assert info[key] == cli_info[key], key
     for key in ("sigma", "spacing", "remaining_sigma", "passes"):
         assert info["noise"][key] == pytest.approx(cli_info["noise"][key], rel=1e-8), key

@@ -56,7 +56,7 @@ bool
 medialMeshGraph(pcl::PointCloud<pcl::PointNormal>::Ptr& working, bool retry_fragmented,
                 int orientation_k, CloudMedialMeshEstimation& estimation, MedialMesh& base,
                 MedialMesh& structured, MatGraph::Ptr& graph, StructureTags& tags,
-                StageTimings& stage_seconds)
+                StageTimings& stage_seconds, MedialMeshEstimationStatistics& statistics)
 {
   auto start = std::chrono::steady_clock::now();
   estimation.setInputCloud(working);
@@ -93,6 +93,7 @@ medialMeshGraph(pcl::PointCloud<pcl::PointNormal>::Ptr& working, bool retry_frag
     mirrored_estimation->setInputCloud(nullptr);
   }
   const bool ok = kept->simplify(base, structured);
+  statistics = kept->getStatistics();
   estimation.setInputCloud(nullptr);
   if (!ok || base.empty())
     return false;

@@ -51,6 +51,7 @@ CloudSegmentation<PointT>::computeField()
   field_valid_ = false;
   field_medial_ok_ = false;
   field_seconds_.clear();
+  mat_statistics_ = MedialMeshEstimationStatistics();
   base_.reset();
   structured_.reset();
   skeleton_.reset(new pcl::PointCloud<MedialPoint>);
@@ -79,7 +80,7 @@ CloudSegmentation<PointT>::computeField()
       field_seconds_.emplace_back("preprocessing", stats_.seconds_preprocessing);
       medial_ok = detail::medialMeshGraph(working_, stats_.normals_estimated, params.orientation_k,
                                           mesh_estimation_, base, structured, graph, tags_,
-                                          field_seconds_);
+                                          field_seconds_, mat_statistics_);
     }
   }
   else {

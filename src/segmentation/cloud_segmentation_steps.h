@@ -44,12 +44,13 @@ medialPointGraph(const pcl::PointCloud<MedialPoint>::ConstPtr& skeleton, int k, 
  * \a working when its initial MAT has at most 3/4 of the components. Only the kept initial MAT
  * is simplified: Q-MAT drops isolated spheres and keeps the other components, so the initial
  * MATs, counted without their isolated spheres, tell what the base MATs would.
+ * \param[out] statistics the kept estimation's statistics
  * \return false when the estimation fails (it said why) or the base MAT gives no graph node */
 bool
 medialMeshGraph(pcl::PointCloud<pcl::PointNormal>::Ptr& working, bool retry_fragmented,
                 int orientation_k, CloudMedialMeshEstimation& estimation, MedialMesh& base,
                 MedialMesh& structured, MatGraph::Ptr& graph, StructureTags& tags,
-                StageTimings& stage_seconds);
+                StageTimings& stage_seconds, MedialMeshEstimationStatistics& statistics);
 
 /** \brief What CloudSegmentation does once the MAT graph exists (untyped core).
  * \param[in] graph the MAT graph (medial mesh or meso-skeleton)

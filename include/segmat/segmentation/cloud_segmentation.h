@@ -335,6 +335,17 @@ public:
     return stage_seconds_;
   }
 
+  /** \brief Sizes and seconds of the medial-mesh step of the last segment() that computed the
+   * medial axis (MedialMeshEstimation::getStatistics()): among them the Voronoi samples
+   * (`voronoi.num_samples`, the working points up to the sample limit) and the initial
+   * spheres. All zero with CloudMedialAxis::MesoSkeleton.
+   */
+  const MedialMeshEstimationStatistics&
+  getMatStatistics() const
+  {
+    return mat_statistics_;
+  }
+
   /** \brief Sizes and timings of the meso-skeleton step of the last segment(). */
   const MesoSkeletonStatistics&
   getMesoSkeletonStatistics() const
@@ -365,6 +376,7 @@ private:
   int k_ = 10;
   bool visibility_ = true;
   MesoSkeletonStatistics stats_; ///< the last segment()'s preprocessing
+  MedialMeshEstimationStatistics mat_statistics_; ///< the last medial-mesh estimation's
   double working_remaining_sigma_ = 0.0; ///< stats_.remaining_sigma in the normalised frame
   double working_touching_ = 0.0; ///< a smoothed cloud's input σ̂ in that frame (else 0)
 
