@@ -190,7 +190,6 @@ public:
   const MedialMeshEstimationStatistics&
   getMatStatistics() const;
 
-
   /** \brief Segment the mesh.
    * \param[out] face_labels one label per face, dense 0..k−1, numbered by descending part size
    *             (face count; ties: the part grown first comes first). Empty on failure.
