@@ -326,6 +326,7 @@ TEST(MeshLabelTransfer, BarSplitsAtTheMiddle)
 {
   BarScene s = bar();
   MeshLabelTransfer transfer;
+  transfer.setJoinFlatBoundaries(false); // the cut alone (the halves meet on flat faces)
   transfer.setInputMesh(s.mesh);
   transfer.setInputGraph(s.graph);
   transfer.setParts(s.parts);
@@ -346,6 +347,12 @@ TEST(MeshLabelTransfer, BarSplitsAtTheMiddle)
   for (int& l : expected)
     l = 1 - l;
   EXPECT_EQ(labels, expected);
+
+  // By default the halves are joined: their boundary runs across the bar's four flat sides.
+  transfer.setJoinFlatBoundaries(true);
+  ASSERT_TRUE(transfer.transfer(labels));
+  EXPECT_EQ(labels, std::vector<int>(s.mesh->numFaces(), 0));
+  EXPECT_EQ(transfer.getLabelParts(), (std::vector<std::vector<int>>{{0, 1}}));
 }
 
 TEST(MeshLabelTransfer, SmoothingOverridesAWeakDataPreference)
@@ -355,6 +362,7 @@ TEST(MeshLabelTransfer, SmoothingOverridesAWeakDataPreference)
   // face takes part 0 — so label 1 disappears and the labels are compacted to all 0.
   BarScene s = bar();
   MeshLabelTransfer transfer;
+  transfer.setJoinFlatBoundaries(false); // the cut alone (the halves meet on flat faces)
   transfer.setInputMesh(s.mesh);
   transfer.setInputGraph(barWithCornerSphere());
   transfer.setParts({{0, 1, 2, 3, 4, 5}, {6}});
@@ -380,6 +388,7 @@ TEST(MeshLabelTransfer, PartBelowTheMinimalShareIsDropped)
   EXPECT_DOUBLE_EQ(MeshLabelTransfer().getMinPartFraction(), 0.002); // the default
   BarScene s = bar();
   MeshLabelTransfer transfer;
+  transfer.setJoinFlatBoundaries(false); // the cut alone (the halves meet on flat faces)
   transfer.setInputMesh(s.mesh);
   transfer.setInputGraph(barWithCornerSphere());
   transfer.setParts({{0, 1, 2}, {3, 4, 5}, {6}});
@@ -401,12 +410,12 @@ TEST(MeshLabelTransfer, PartBelowTheMinimalShareIsDropped)
   transfer.setMinPartFraction(0.5 * share);
   ASSERT_TRUE(transfer.transfer(labels));
   EXPECT_EQ(labels, all);
-  EXPECT_EQ(transfer.getLabelParts(), (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(transfer.getLabelParts(), (std::vector<std::vector<int>>{{0}, {1}, {2}}));
 
   transfer.setMinPartFraction(2.0 * share);
   ASSERT_TRUE(transfer.transfer(labels));
   EXPECT_EQ(labels, labelsBySide(*s.mesh));
-  EXPECT_EQ(transfer.getLabelParts(), (std::vector<int>{0, 1}));
+  EXPECT_EQ(transfer.getLabelParts(), (std::vector<std::vector<int>>{{0}, {1}}));
 }
 
 TEST(MeshLabelTransfer, OnePartAndBadInput)
@@ -414,6 +423,7 @@ TEST(MeshLabelTransfer, OnePartAndBadInput)
   pcl::console::setVerbosityLevel(pcl::console::L_ALWAYS);
   BarScene s = bar();
   MeshLabelTransfer transfer;
+  transfer.setJoinFlatBoundaries(false); // the cut alone (the halves meet on flat faces)
   std::vector<int> labels{3};
   EXPECT_FALSE(transfer.transfer(labels)); // nothing set
   EXPECT_TRUE(labels.empty());
@@ -452,6 +462,7 @@ TEST(MeshLabelTransfer, OpenNonManifoldAndDegenerateMeshes)
   mesh->vertices.push_back(Eigen::Vector3d::Constant(std::nan("")));
   mesh->faces.emplace_back(a, b, static_cast<int>(mesh->vertices.size()) - 1); // NaN corner
   MeshLabelTransfer transfer;
+  transfer.setJoinFlatBoundaries(false); // the cut alone (the halves meet on flat faces)
   transfer.setInputMesh(mesh);
   transfer.setInputGraph(s.graph);
   transfer.setParts(s.parts);
@@ -492,6 +503,7 @@ TEST(CloudLabelTransfer, BarSamplesSplitAtTheMiddle)
   expected.push_back(-1);
 
   CloudLabelTransfer transfer;
+  transfer.setJoinFlatBoundaries(false); // the cut alone (the halves meet on flat faces)
   transfer.setInputCloud(cloud);
   transfer.setInputGraph(s.graph);
   transfer.setParts(s.parts);
@@ -505,6 +517,7 @@ TEST(CloudLabelTransfer, BarSamplesSplitAtTheMiddle)
   EXPECT_EQ(transfer.getNumberOfThreads(), 0u);
   for (unsigned threads : {1u, 2u}) {
     CloudLabelTransfer threaded;
+    threaded.setJoinFlatBoundaries(false);
     threaded.setNumberOfThreads(threads);
     EXPECT_EQ(threaded.getNumberOfThreads(), threads);
     threaded.setInputCloud(cloud);
@@ -515,6 +528,19 @@ TEST(CloudLabelTransfer, BarSamplesSplitAtTheMiddle)
     ASSERT_TRUE(threaded.transfer(threaded_labels));
     EXPECT_EQ(threaded_labels, expected) << threads << " threads";
   }
+  // By default the halves are joined when the points carry normals (their boundary crosses
+  // the bar's flat sides); without normals nothing tells a flat boundary, and they stay apart.
+  CloudLabelTransfer joining;
+  joining.setInputCloud(cloud);
+  joining.setInputGraph(s.graph);
+  joining.setParts(s.parts);
+  ASSERT_TRUE(joining.transfer(labels));
+  EXPECT_EQ(labels, expected);
+  joining.setInputNormals(normals);
+  ASSERT_TRUE(joining.transfer(labels));
+  std::vector<int> one(expected.size(), 0);
+  one.back() = -1; // the NaN point
+  EXPECT_EQ(labels, one);
 
   // Cut on ~300 voxel representatives instead of all 2078 points: away from the middle (more
   // than a voxel or two) every point keeps its side; each point takes its voxel's label.

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <functional>
 #include <numeric>
+#include <set>
 
 using namespace segmat;
 
@@ -215,4 +216,38 @@ TEST(MeshSegmentation, BadInputFailsCleanly)
   EXPECT_TRUE(seg.segment(labels));
   EXPECT_EQ(labels.size(), 19092u);
   pcl::console::setVerbosityLevel(pcl::console::L_INFO);
+}
+
+TEST(MeshSegmentation, FlatBoundariesAreJoined)
+{
+  // PSB 321: a box with a smaller box on its lid; its four humans cut it into exactly these two.
+  // Under jitter seed 3 the medial axis splits the big box by thickness (the middle of its
+  // faces against their rims), and the cut follows that split across the flat faces: four parts.
+  // Joining the parts whose boundary crosses flat surface gives the two boxes back.
+  const std::string dir = std::string(SEGMAT_DATA_DIR) + "/psb321/";
+  const auto mesh = std::make_shared<TriangleMesh>(io::loadOff(dir + "321.off"));
+  std::vector<std::vector<int>> humans;
+  for (int k = 0; k < 4; ++k)
+    humans.push_back(io::loadSeg(dir + "seg/321_" + std::to_string(k) + ".seg",
+                                 static_cast<long>(mesh->numFaces())));
+  PsbEvaluator evaluator;
+  ASSERT_TRUE(evaluator.setInputMesh(*mesh));
+  const auto segment = [&](bool join, double& rand_distance) {
+    MeshSegmentation seg;
+    seg.setInputMesh(mesh);
+    seg.setJitterSeed(3);
+    seg.setJoinFlatBoundaries(join);
+    std::vector<int> labels;
+    EXPECT_TRUE(seg.segment(labels));
+    PsbScores mean;
+    EXPECT_TRUE(evaluator.scoreAgainstAll(labels, humans, mean));
+    rand_distance = mean.RI;
+    EXPECT_EQ(seg.getMatParts().size(), std::set<int>(labels.begin(), labels.end()).size());
+    return std::set<int>(labels.begin(), labels.end()).size();
+  };
+  double apart = 0.0, joined = 0.0;
+  EXPECT_EQ(segment(false, apart), 4u);
+  EXPECT_EQ(segment(true, joined), 2u);
+  EXPECT_GT(apart, 0.3);
+  EXPECT_LT(joined, 0.1);
 }

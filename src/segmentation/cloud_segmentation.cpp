@@ -116,7 +116,8 @@ bool
 segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
                     const pcl::PointCloud<pcl::PointNormal>& working, int transfer_k,
                     bool visibility, MatRegionGrowing& grower, CloudLabelTransfer& transfer,
-                    std::vector<int>& working_labels, std::vector<int>& label_parts,
+                    std::vector<int>& working_labels,
+                    std::vector<std::vector<int>>& label_parts,
                     std::vector<pcl::PointIndices>& parts,
                     StageTimings& stage_seconds)
 {

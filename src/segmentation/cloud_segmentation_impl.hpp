@@ -11,6 +11,7 @@
 
 #include "../medial/preprocess_cloud.h"
 #include "cloud_segmentation_steps.h"
+#include "flat_boundaries.h"
 
 #include <pcl/common/colors.h>
 #include <pcl/common/point_tests.h>
@@ -174,7 +175,8 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
     return true;
   }
 
-  std::vector<int> working_labels, label_parts;
+  std::vector<int> working_labels;
+  std::vector<std::vector<int>> label_parts;
   std::vector<pcl::PointIndices> grown;
   // As for meshes: radius differences within the noise that smoothing left tell nothing.
   grower_.setRadiusTolerance(working_remaining_sigma_);
@@ -200,7 +202,7 @@ CloudSegmentation<PointT>::segment(std::vector<pcl::PointIndices>& parts)
   mat_parts_.assign(parts.size(), pcl::PointIndices());
   for (std::size_t l = 0; l < rank.size(); ++l)
     if (rank[l] >= 0)
-      mat_parts_[rank[l]] = grown[label_parts[l]];
+      mat_parts_[rank[l]] = detail::joinParts(grown, label_parts[l]);
   stage_seconds_.emplace_back(
       "labels",
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

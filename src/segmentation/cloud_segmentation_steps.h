@@ -61,7 +61,7 @@ medialMeshGraph(pcl::PointCloud<pcl::PointNormal>::Ptr& working, bool retry_frag
  * \param[in,out] grower the grower, parameters set (its graph and visibility are set here)
  * \param[in,out] transfer the transfer, ω set (its inputs are set here)
  * \param[out] working_labels one label per working point, in growing order (compacted)
- * \param[out] label_parts for each label, the index of its part in \a parts
+ * \param[out] label_parts for each label, the indices of its parts in \a parts
  * \param[out] parts the grower's parts (MAT-graph nodes)
  * \param[in,out] stage_seconds "grow_merge", "transfer" are appended
  * \return false (PCL_ERROR) when a stage fails
@@ -70,7 +70,8 @@ bool
 segmentWorkingCloud(const MatGraph::Ptr& graph, const StructureTags& tags,
                     const pcl::PointCloud<pcl::PointNormal>& working, int transfer_k,
                     bool visibility, MatRegionGrowing& grower, CloudLabelTransfer& transfer,
-                    std::vector<int>& working_labels, std::vector<int>& label_parts,
+                    std::vector<int>& working_labels,
+                    std::vector<std::vector<int>>& label_parts,
                     std::vector<pcl::PointIndices>& parts,
                     StageTimings& stage_seconds);
 

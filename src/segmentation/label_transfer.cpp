@@ -8,15 +8,19 @@
 
 #include "../common/point_kd_tree.h"
 #include "../common/thread_count.h"
+#include "flat_boundaries.h"
 
 #include <pcl/console/print.h>
 #include <pcl/common/point_tests.h>
 #include <pcl/pcl_base.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <numeric>
 #include <utility>
 
 namespace segmat {
@@ -93,8 +97,13 @@ computeCreaseCost(const Eigen::Vector3d& centre_a, const Eigen::Vector3d& normal
   return 2.0 * std::floor(std::max(0.0, per_registration * kTransferEnergyScale) + 1e-6);
 }
 
+namespace {
+
+/// computeMeshSmoothnessEdges(), and with \a boundary each edge's crossing curvature and
+/// length (what joinFlatBoundaries() reads).
 std::vector<PottsEdge>
-computeMeshSmoothnessEdges(const TriangleMesh& mesh, double omega, CreaseModel model)
+meshSmoothnessEdges(const TriangleMesh& mesh, double omega, CreaseModel model,
+                    std::vector<detail::BoundaryEdge>* boundary)
 {
   const std::vector<FaceAdjacency> adjacency = mesh.faceAdjacency();
   const std::vector<int> signs = computeOutwardFaceSigns(mesh, adjacency);
@@ -105,20 +114,41 @@ computeMeshSmoothnessEdges(const TriangleMesh& mesh, double omega, CreaseModel m
     centroids[f] = mesh.faceCentroid(f);
   }
   std::vector<PottsEdge> edges(adjacency.size());
+  if (boundary)
+    boundary->resize(adjacency.size());
   for (std::size_t k = 0; k < adjacency.size(); ++k) {
     const int a = adjacency[k].face_a, b = adjacency[k].face_b;
     edges[k] = {a, b,
                 computeCreaseCost(centroids[a], normals[a], centroids[b], normals[b], omega, model)};
+    if (boundary)
+      (*boundary)[k] = {a, b,
+                        detail::crossingCurvature(centroids[a], normals[a], centroids[b],
+                                                  normals[b]),
+                        (mesh.vertices[adjacency[k].v0] - mesh.vertices[adjacency[k].v1]).norm()};
   }
   return edges;
 }
 
+} // namespace
+
 std::vector<PottsEdge>
-computeCloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
-                            const pcl::PointCloud<pcl::Normal>::ConstPtr& normals,
-                            const std::vector<int>& nodes, int k, double omega,
-                            CreaseModel model, unsigned int threads)
+computeMeshSmoothnessEdges(const TriangleMesh& mesh, double omega, CreaseModel model)
 {
+  return meshSmoothnessEdges(mesh, omega, model, nullptr);
+}
+
+namespace {
+
+/// computeCloudSmoothnessEdges(), and with \a boundary (and normals) each edge's crossing
+/// curvature, weight 1.
+std::vector<PottsEdge>
+cloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+                     const pcl::PointCloud<pcl::Normal>::ConstPtr& normals,
+                     const std::vector<int>& nodes, int k, double omega, CreaseModel model,
+                     unsigned int threads, std::vector<detail::BoundaryEdge>* boundary)
+{
+  if (boundary)
+    boundary->clear();
   std::vector<PottsEdge> edges;
   if (!cloud || nodes.size() < 2 || k < 1)
     return edges;
@@ -171,19 +201,34 @@ computeCloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& clou
   const double flat = computeCreaseCost(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(),
                                         Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), omega);
   edges.reserve(pairs.size());
+  if (boundary && normals)
+    boundary->reserve(pairs.size());
   for (const auto& p : pairs) {
     double w = flat;
     if (normals) {
       const int ia = nodes[p.first], ib = nodes[p.second];
-      w = computeCreaseCost((*cloud)[ia].getVector3fMap().cast<double>(),
-                            (*normals)[ia].getNormalVector3fMap().cast<double>(),
-                            (*cloud)[ib].getVector3fMap().cast<double>(),
-                            (*normals)[ib].getNormalVector3fMap().cast<double>(), omega,
-                            model);
+      const Eigen::Vector3d ca = (*cloud)[ia].getVector3fMap().cast<double>(),
+                            na = (*normals)[ia].getNormalVector3fMap().cast<double>(),
+                            cb = (*cloud)[ib].getVector3fMap().cast<double>(),
+                            nb = (*normals)[ib].getNormalVector3fMap().cast<double>();
+      w = computeCreaseCost(ca, na, cb, nb, omega, model);
+      if (boundary) // without normals nothing tells a flat boundary: none is joined
+        boundary->push_back({p.first, p.second, detail::crossingCurvature(ca, na, cb, nb), 1.0});
     }
     edges.push_back({p.first, p.second, std::floor(w * degree_scale)});
   }
   return edges;
+}
+
+} // namespace
+
+std::vector<PottsEdge>
+computeCloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
+                            const pcl::PointCloud<pcl::Normal>::ConstPtr& normals,
+                            const std::vector<int>& nodes, int k, double omega,
+                            CreaseModel model, unsigned int threads)
+{
+  return cloudSmoothnessEdges(cloud, normals, nodes, k, omega, model, threads, nullptr);
 }
 
 int
@@ -253,7 +298,7 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
       }
   if (parts_.size() == 1) {
     labels.assign(positions.size(), 0);
-    label_parts_.assign(positions.empty() ? 0 : 1, 0);
+    label_parts_.assign(positions.empty() ? 0 : 1, std::vector<int>{0});
     return true;
   }
   const Eigen::MatrixXd unary = computePartDistanceCosts(positions, *graph_, parts_, threads_);
@@ -310,16 +355,48 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
       r = kept[r];
     kept.swap(next);
   }
+  // Parts whose boundary crosses flat surface become one; a joined label is named by its
+  // lowest part.
+  std::vector<int> group(kept.size());
+  std::iota(group.begin(), group.end(), 0);
+  if (join_flat_boundaries_ && kept.size() > 1 && boundary_ && !boundary_->empty()) {
+    Eigen::AlignedBox3d box;
+    for (const Eigen::Vector3d& p : positions)
+      if (p.allFinite())
+        box.extend(p);
+    group = detail::joinFlatBoundaries(labels, static_cast<int>(kept.size()), *boundary_,
+                                       box.isEmpty() ? 0.0 : box.diagonal().norm());
+  }
+  std::vector<int> named(kept.size(), -1);
+  for (std::size_t r = 0; r < kept.size(); ++r)
+    if (named[group[r]] < 0)
+      named[group[r]] = kept[r]; // kept ascends: the group's lowest part comes first
   for (int& l : labels)
-    l = kept[l];
+    l = named[group[l]];
+  std::vector<std::vector<int>> members(parts_.size());
+  for (std::size_t r = 0; r < kept.size(); ++r)
+    members[named[group[r]]].push_back(kept[r]);
   std::vector<char> present(parts_.size(), 0);
   for (int l : labels)
     present[l] = 1;
   for (std::size_t l = 0; l < parts_.size(); ++l)
     if (present[l])
-      label_parts_.push_back(static_cast<int>(l));
+      label_parts_.push_back(std::move(members[l]));
   compactLabels(labels);
   return true;
+}
+
+void
+LabelTransferBase::setJoinFlatBoundaries(bool join)
+{
+  join_flat_boundaries_ = join;
+}
+
+std::vector<detail::BoundaryEdge>*
+LabelTransferBase::newBoundary()
+{
+  boundary_ = std::make_shared<std::vector<detail::BoundaryEdge>>();
+  return boundary_.get();
 }
 
 bool
@@ -333,7 +410,7 @@ MeshLabelTransfer::transfer(std::vector<int>& face_labels)
   }
   // The face graph is only needed when there is something to cut (and then kept for reuse).
   if (parts_.size() > 1 && edgesStale()) {
-    solver_.setEdges(computeMeshSmoothnessEdges(*mesh_, omega_, crease_model_));
+    solver_.setEdges(meshSmoothnessEdges(*mesh_, omega_, crease_model_, newBoundary()));
     markEdgesBuilt();
   }
   std::vector<Eigen::Vector3d> centroids(mesh_->numFaces());
@@ -478,9 +555,8 @@ CloudLabelTransfer::transfer(std::vector<int>& point_labels)
   }
   // The neighbour graph is only needed when there is something to cut (and then kept).
   if (parts_.size() > 1 && edgesStale()) {
-    solver_.setEdges(
-        computeCloudSmoothnessEdges(cloud_, normals_, nodes_, k_, omega_, crease_model_,
-                                    threads_));
+    solver_.setEdges(cloudSmoothnessEdges(cloud_, normals_, nodes_, k_, omega_, crease_model_,
+                                          threads_, newBoundary()));
     markEdgesBuilt();
   }
   std::vector<Eigen::Vector3d> positions(nodes_.size());

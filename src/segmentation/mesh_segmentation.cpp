@@ -7,6 +7,7 @@
 
 #include "../common/thread_count.h"
 #include "../medial/surface_denoising.h"
+#include "flat_boundaries.h"
 
 #include <pcl/console/print.h>
 
@@ -294,7 +295,7 @@ MeshSegmentation::segmentInFrame(std::vector<int>& face_labels)
 
   // Number parts by descending face count; ties keep growing order (the transfer's labels are
   // already in growing order).
-  const std::vector<int>& label_parts = transfer_.getLabelParts();
+  const std::vector<std::vector<int>>& label_parts = transfer_.getLabelParts();
   const int num_labels = static_cast<int>(label_parts.size());
   std::vector<int> counts(num_labels, 0);
   for (int l : labels)
@@ -310,7 +311,7 @@ MeshSegmentation::segmentInFrame(std::vector<int>& face_labels)
     l = rank[l];
   mat_parts_.resize(num_labels);
   for (int r = 0; r < num_labels; ++r)
-    mat_parts_[r] = grown[label_parts[order[r]]];
+    mat_parts_[r] = detail::joinParts(grown, label_parts[order[r]]);
   stage_seconds_.emplace_back("transfer", clock.lap());
 
   face_labels_ = labels;

@@ -18,6 +18,10 @@
 
 namespace segmat {
 
+namespace detail {
+struct BoundaryEdge;
+} // namespace detail
+
 /** \brief SEG-MAT's integer energy scale (reference `int enlarge = 10e4`, i.e. 1e5). Terms are
  * truncated to integers as in the reference, which also keeps every max-flow sum exact.
  */
@@ -235,13 +239,38 @@ public:
     return solver_.getEnergy();
   }
 
-  /** \brief For each output label of the last transfer, the index of its part in getParts()
-   * (labels are compacted: parts that won no element get no label).
+  /** \brief For each output label of the last transfer, the indices of its parts in getParts(),
+   * ascending: one part, or several that setJoinFlatBoundaries() joined (labels are compacted:
+   * parts that won no element get no label).
    */
-  const std::vector<int>&
+  const std::vector<std::vector<int>>&
   getLabelParts() const
   {
     return label_parts_;
+  }
+
+  /** \brief Join parts whose shared boundary crosses flat surface (default true).
+   *
+   * People cut shapes where the surface folds inwards (the minima rule, Hoffman & Richards
+   * 1984), and the crease term already draws the cut along such folds. But the medial axis
+   * also splits a shape where its thickness changes without any fold: the middle of a box's
+   * face lies on spheres of the box's full half-thickness, its rims on the thinner spheres
+   * near the edges, and the cut can follow that split across the flat face. After the cut, two
+   * labels become one when, along most of their boundary, the surface curves less than the
+   * shape's bounding sphere: the median of |θ| / d over the boundary's edges (θ the turn of the
+   * outward normals across the edge, d the distance between the two elements; weighted by the
+   * shared edge's length on a mesh) is at most 2 / the surface's bounding-box diagonal. The
+   * flattest boundary is joined first, then the others are measured again. A cloud without
+   * normals is never joined. Not in SEG-MAT (docs/method.md, §5).
+   */
+  void
+  setJoinFlatBoundaries(bool join);
+
+  /** \brief Whether parts with a flat boundary are joined. */
+  bool
+  getJoinFlatBoundaries() const
+  {
+    return join_flat_boundaries_;
   }
 
   /** \brief Smallest share of the surface a part may keep: of the mesh's area, or of the
@@ -305,8 +334,15 @@ protected:
   bool edges_valid_ = false; ///< the solver holds smoothness edges of the current input
   double edges_omega_ = 0.0;
   CreaseModel edges_crease_ = CreaseModel::SharpConcave;
+  /** \brief A new, empty boundary list for the smoothness edges being built. */
+  std::vector<detail::BoundaryEdge>*
+  newBoundary();
+
   AlphaExpansion solver_;
-  std::vector<int> label_parts_;
+  std::vector<std::vector<int>> label_parts_;
+  bool join_flat_boundaries_ = true;
+  /// Per smoothness edge, its curvature across and weight (joinFlatBoundaries()).
+  std::shared_ptr<std::vector<detail::BoundaryEdge>> boundary_;
 };
 
 /** \brief Carries parts of the MAT graph to the faces of a triangle mesh by α-expansion

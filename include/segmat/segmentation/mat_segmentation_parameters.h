@@ -109,6 +109,22 @@ public:
     return transfer_.getCreaseModel();
   }
 
+  /** \brief Join parts whose boundary on the surface crosses flat surface after the cut
+   * (LabelTransferBase::setJoinFlatBoundaries; default true; false reproduces SEG-MAT).
+   */
+  void
+  setJoinFlatBoundaries(bool join)
+  {
+    transfer_.setJoinFlatBoundaries(join);
+  }
+
+  /** \brief Whether parts with a flat boundary are joined after the cut. */
+  bool
+  getJoinFlatBoundaries() const
+  {
+    return transfer_.getJoinFlatBoundaries();
+  }
+
   /** \brief ω, weight of the graph cut's smoothness term (default 0.3). */
   void
   setSmoothnessWeight(double omega)

@@ -1,0 +1,113 @@
+/*
+ * segmat — 3D shape segmentation with the medial axis transform.
+ * SPDX-License-Identifier: BSD-3-Clause
+ */
+#include "flat_boundaries.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <utility>
+
+namespace segmat {
+namespace detail {
+
+double
+crossingCurvature(const Eigen::Vector3d& centre_a, const Eigen::Vector3d& normal_a,
+                  const Eigen::Vector3d& centre_b, const Eigen::Vector3d& normal_b)
+{
+  const Eigen::Vector3d step = centre_b - centre_a;
+  const double distance = step.norm();
+  const double la = normal_a.norm(), lb = normal_b.norm();
+  if (!(distance > 0.0) || !(la > 0.0) || !(lb > 0.0))
+    return 0.0;
+  const double cosine = std::clamp(normal_a.dot(normal_b) / (la * lb), -1.0, 1.0);
+  const double angle = std::acos(cosine) / distance;
+  if (!std::isfinite(angle))
+    return 0.0;
+  // The concavity test of computeCreaseCost(), on unit normals.
+  const bool concave = step.dot(normal_a / la - normal_b / lb) > 1e-6 * distance;
+  return concave ? angle : -angle;
+}
+
+std::vector<int>
+joinFlatBoundaries(const std::vector<int>& labels, int num_labels,
+                   const std::vector<BoundaryEdge>& edges, double diagonal)
+{
+  std::vector<int> group(std::max(num_labels, 0));
+  std::iota(group.begin(), group.end(), 0);
+  if (num_labels < 2 || !(diagonal > 0.0))
+    return group;
+  // Groups are joined into their lowest label, so a group's id is its lowest label throughout.
+  auto find = [&group](int l) {
+    while (group[l] != l)
+      l = group[l] = group[group[l]];
+    return l;
+  };
+  // Joining only removes boundaries: the edges between different labels are all there is.
+  std::vector<BoundaryEdge> crossing;
+  for (const BoundaryEdge& e : edges)
+    if (labels[e.a] != labels[e.b])
+      crossing.push_back(e);
+  // Per pair of groups, (|curvature| × diagonal, weight) of the edges between them.
+  std::map<std::pair<int, int>, std::vector<std::pair<double, double>>> boundaries;
+  for (;;) {
+    boundaries.clear();
+    for (const BoundaryEdge& e : crossing) {
+      const int ga = find(labels[e.a]), gb = find(labels[e.b]);
+      if (ga != gb)
+        boundaries[{std::min(ga, gb), std::max(ga, gb)}].emplace_back(
+            std::abs(e.curvature) * diagonal, e.weight);
+    }
+    double flattest = kFlatBoundaryCurvature;
+    std::pair<int, int> join{-1, -1};
+    for (auto& [pair, values] : boundaries) { // map order: ties go to the lowest pair
+      std::sort(values.begin(), values.end());
+      double total = 0.0;
+      for (const auto& v : values)
+        total += v.second;
+      double below = 0.0, median = values.back().first;
+      for (const auto& v : values) {
+        below += v.second;
+        if (below >= 0.5 * total) {
+          median = v.first;
+          break;
+        }
+      }
+      if (median <= flattest && (join.first < 0 || median < flattest)) {
+        flattest = median;
+        join = pair;
+      }
+    }
+    if (join.first < 0)
+      break;
+    group[join.second] = join.first;
+  }
+  std::vector<int> dense(group.size(), -1);
+  int count = 0;
+  for (int l = 0; l < num_labels; ++l) {
+    const int root = find(l);
+    if (dense[root] < 0)
+      dense[root] = count++;
+    group[l] = root;
+  }
+  for (int l = 0; l < num_labels; ++l)
+    group[l] = dense[group[l]];
+  return group;
+}
+
+pcl::PointIndices
+joinParts(const std::vector<pcl::PointIndices>& parts, const std::vector<int>& members)
+{
+  pcl::PointIndices joined;
+  for (int p : members)
+    joined.indices.insert(joined.indices.end(), parts[p].indices.begin(),
+                          parts[p].indices.end());
+  if (members.size() > 1)
+    std::sort(joined.indices.begin(), joined.indices.end());
+  return joined;
+}
+
+} // namespace detail
+} // namespace segmat

@@ -1,0 +1,92 @@
+// Joining parts whose boundary crosses flat surface: the crossing curvature of two surface
+// elements and the weighted-median rule of joinFlatBoundaries().
+#include "../src/segmentation/flat_boundaries.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace segmat;
+using detail::BoundaryEdge;
+
+namespace {
+/// A unit normal turned by \a degrees from +z towards +x.
+Eigen::Vector3d
+tilted(double degrees)
+{
+  const double a = degrees * M_PI / 180.0;
+  return {std::sin(a), 0.0, std::cos(a)};
+}
+} // namespace
+
+TEST(FlatBoundaries, CrossingCurvatureIsTheTurnOverTheDistance)
+{
+  const Eigen::Vector3d a(0, 0, 0), b(2, 0, 0);
+  // Coplanar: no turn.
+  EXPECT_EQ(detail::crossingCurvature(a, tilted(0), b, tilted(0)), 0.0);
+  // b's normal leans back towards a: the surface folds inwards (a valley), concave, +30° / 2.
+  EXPECT_NEAR(detail::crossingCurvature(a, tilted(0), b, tilted(-30)), M_PI / 6.0 / 2.0, 1e-12);
+  // Leaning away: a ridge, convex, the same magnitude with the sign turned.
+  EXPECT_NEAR(detail::crossingCurvature(a, tilted(0), b, tilted(30)), -M_PI / 6.0 / 2.0, 1e-12);
+  // Symmetric in the two elements, and free of the normals' lengths.
+  EXPECT_NEAR(detail::crossingCurvature(b, 3.0 * tilted(-30), a, tilted(0)), M_PI / 12.0, 1e-12);
+  // Nothing to measure: coincident centres or a zero normal.
+  EXPECT_EQ(detail::crossingCurvature(a, tilted(0), a, tilted(-30)), 0.0);
+  EXPECT_EQ(detail::crossingCurvature(a, Eigen::Vector3d::Zero(), b, tilted(-30)), 0.0);
+}
+
+TEST(FlatBoundaries, JoinsOnlyBoundariesFlatterThanTheBoundingSphere)
+{
+  // Six elements in a row labelled 0 0 1 1 2 2; diagonal 1, so the limit is |curvature| <= 2.
+  const std::vector<int> labels{0, 0, 1, 1, 2, 2};
+  // Boundary 0|1 curves at 1.9 (flatter than the bounding sphere), 1|2 at 2.1 (not).
+  std::vector<BoundaryEdge> edges{{0, 1, 50.0, 1.0}, {1, 2, 1.9, 1.0}, {2, 3, -50.0, 1.0},
+                                  {3, 4, -2.1, 1.0}, {4, 5, 0.0, 1.0}};
+  EXPECT_EQ(detail::joinFlatBoundaries(labels, 3, edges, 1.0), (std::vector<int>{0, 0, 1}));
+  // Convex counts as curved: |−1.9| joins as 1.9 does, |−2.1| does not.
+  edges[1].curvature = -1.9;
+  EXPECT_EQ(detail::joinFlatBoundaries(labels, 3, edges, 1.0), (std::vector<int>{0, 0, 1}));
+  // The diagonal sets the scale: at diagonal 2 the boundary 0|1 curves at 3.8.
+  EXPECT_EQ(detail::joinFlatBoundaries(labels, 3, edges, 2.0), (std::vector<int>{0, 1, 2}));
+  // Both flat: everything becomes one label.
+  edges[3].curvature = 0.5;
+  EXPECT_EQ(detail::joinFlatBoundaries(labels, 3, edges, 1.0), (std::vector<int>{0, 0, 0}));
+  // No boundary, one label or no diagonal: nothing to join.
+  EXPECT_EQ(detail::joinFlatBoundaries(labels, 3, {}, 1.0), (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(detail::joinFlatBoundaries({0, 0}, 1, {{0, 1, 0.0, 1.0}}, 1.0),
+            (std::vector<int>{0}));
+  EXPECT_EQ(detail::joinFlatBoundaries(labels, 3, edges, 0.0), (std::vector<int>{0, 1, 2}));
+}
+
+TEST(FlatBoundaries, TheWeightedMedianDecides)
+{
+  // Two labels; their boundary has flat edges (curvature 0) and crease edges (curvature 100,
+  // e.g. where a flat boundary meets a fold). The median, weighted by edge length, decides.
+  const std::vector<int> labels{0, 1, 0, 1, 0, 1};
+  std::vector<BoundaryEdge> edges{{0, 1, 0.0, 1.0}, {2, 3, 0.0, 1.0}, {4, 5, 100.0, 1.0}};
+  // Two thirds of the boundary flat: joined, whatever the crease's curvature.
+  EXPECT_EQ(detail::joinFlatBoundaries(labels, 2, edges, 1.0), (std::vector<int>{0, 0}));
+  // The crease edge three times as long as both flat ones together: kept apart.
+  edges[2].weight = 6.0;
+  EXPECT_EQ(detail::joinFlatBoundaries(labels, 2, edges, 1.0), (std::vector<int>{0, 1}));
+}
+
+TEST(FlatBoundaries, FlattestFirstThenMeasuredAgain)
+{
+  // Labels 0 | 1 | 2 in a row, with 1|2 the flattest; after that join, the boundary between 0
+  // and the joined {1, 2} is measured again over all of its edges: 0|1 alone is curved (3.0),
+  // but 0|2 adds two flat edges, and the join {0, 1, 2} follows.
+  const std::vector<int> labels{0, 1, 2, 0, 2, 0, 2};
+  const std::vector<BoundaryEdge> edges{{0, 1, 3.0, 1.0},
+                                        {1, 2, 0.0, 1.0},
+                                        {3, 4, 1.0, 1.0},
+                                        {5, 6, 1.0, 1.0}};
+  // Before any join, 0|2 (median of 1.0 and 1.0) and 1|2 (0.0) are flat, 0|1 (3.0) is not;
+  // 1|2 goes first, then {0} | {1, 2} has edges 3.0, 1.0, 1.0: median 1.0, joined.
+  EXPECT_EQ(detail::joinFlatBoundaries(labels, 3, edges, 1.0), (std::vector<int>{0, 0, 0}));
+  // Groups are numbered by their lowest label.
+  const std::vector<int> apart{2, 0, 1};
+  const std::vector<BoundaryEdge> one_flat{{0, 1, 5.0, 1.0}, {1, 2, 0.0, 1.0}};
+  // Elements 0, 1, 2 carry labels 2, 0, 1: the flat boundary joins labels 0 and 1.
+  EXPECT_EQ(detail::joinFlatBoundaries(apart, 3, one_flat, 1.0), (std::vector<int>{0, 0, 1}));
+}
