@@ -30,9 +30,11 @@ TEST(FlatBoundaries, CrossingCurvatureIsTheTurnOverTheDistance)
   EXPECT_NEAR(detail::crossingCurvature(a, tilted(0), b, tilted(30)), -M_PI / 6.0 / 2.0, 1e-12);
   // Symmetric in the two elements, and free of the normals' lengths.
   EXPECT_NEAR(detail::crossingCurvature(b, 3.0 * tilted(-30), a, tilted(0)), M_PI / 12.0, 1e-12);
-  // Nothing to measure: coincident centres or a zero normal.
-  EXPECT_EQ(detail::crossingCurvature(a, tilted(0), a, tilted(-30)), 0.0);
-  EXPECT_EQ(detail::crossingCurvature(a, Eigen::Vector3d::Zero(), b, tilted(-30)), 0.0);
+  // Nothing to measure: coincident centres, a zero (degenerate face's) or a NaN normal.
+  EXPECT_TRUE(std::isnan(detail::crossingCurvature(a, tilted(0), a, tilted(-30))));
+  EXPECT_TRUE(std::isnan(detail::crossingCurvature(a, Eigen::Vector3d::Zero(), b, tilted(-30))));
+  EXPECT_TRUE(std::isnan(
+      detail::crossingCurvature(a, Eigen::Vector3d::Constant(std::nan("")), b, tilted(0))));
 }
 
 TEST(FlatBoundaries, JoinsOnlyBoundariesFlatterThanTheBoundingSphere)
@@ -51,6 +53,12 @@ TEST(FlatBoundaries, JoinsOnlyBoundariesFlatterThanTheBoundingSphere)
   // Both flat: everything becomes one label.
   edges[3].curvature = 0.5;
   EXPECT_EQ(detail::joinFlatBoundaries(labels, 3, edges, 1.0), (std::vector<int>{0, 0, 0}));
+  // Edges of unknown curvature do not count: a boundary of degenerate faces only stays.
+  EXPECT_EQ(detail::joinFlatBoundaries({0, 1}, 2, {{0, 1, std::nan(""), 1.0}}, 1.0),
+            (std::vector<int>{0, 1}));
+  EXPECT_EQ(detail::joinFlatBoundaries({0, 1, 0, 1}, 2,
+                                       {{0, 1, std::nan(""), 5.0}, {2, 3, 50.0, 1.0}}, 1.0),
+            (std::vector<int>{0, 1}));
   // No boundary, one label or no diagonal: nothing to join.
   EXPECT_EQ(detail::joinFlatBoundaries(labels, 3, {}, 1.0), (std::vector<int>{0, 1, 2}));
   EXPECT_EQ(detail::joinFlatBoundaries({0, 0}, 1, {{0, 1, 0.0, 1.0}}, 1.0),

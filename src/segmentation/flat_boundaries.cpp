@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <utility>
@@ -17,15 +18,16 @@ double
 crossingCurvature(const Eigen::Vector3d& centre_a, const Eigen::Vector3d& normal_a,
                   const Eigen::Vector3d& centre_b, const Eigen::Vector3d& normal_b)
 {
+  constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
   const Eigen::Vector3d step = centre_b - centre_a;
   const double distance = step.norm();
   const double la = normal_a.norm(), lb = normal_b.norm();
   if (!(distance > 0.0) || !(la > 0.0) || !(lb > 0.0))
-    return 0.0;
+    return kUnknown;
   const double cosine = std::clamp(normal_a.dot(normal_b) / (la * lb), -1.0, 1.0);
   const double angle = std::acos(cosine) / distance;
   if (!std::isfinite(angle))
-    return 0.0;
+    return kUnknown;
   // The concavity test of computeCreaseCost(), on unit normals.
   const bool concave = step.dot(normal_a / la - normal_b / lb) > 1e-6 * distance;
   return concave ? angle : -angle;
@@ -47,8 +49,9 @@ joinFlatBoundaries(const std::vector<int>& labels, int num_labels,
   };
   // Joining only removes boundaries: the edges between different labels are all there is.
   std::vector<BoundaryEdge> crossing;
+  // An edge whose curvature is unknown (a degenerate face) tells nothing either way.
   for (const BoundaryEdge& e : edges)
-    if (labels[e.a] != labels[e.b])
+    if (labels[e.a] != labels[e.b] && std::isfinite(e.curvature) && e.weight > 0.0)
       crossing.push_back(e);
   // Per pair of groups, (|curvature| × diagonal, weight) of the edges between them.
   std::map<std::pair<int, int>, std::vector<std::pair<double, double>>> boundaries;

@@ -18,14 +18,14 @@ namespace detail {
 struct BoundaryEdge
 {
   int a = -1, b = -1;     ///< the two elements
-  double curvature = 0.0; ///< crossingCurvature() of the pair
+  double curvature = 0.0; ///< crossingCurvature() of the pair (NaN: unknown, not counted)
   double weight = 1.0;    ///< share of the boundary: the shared edge's length, or 1 per point pair
 };
 
 /** \brief Curvature of the surface across two neighbouring elements: the angle between their
  * outward normals (radians) over the distance between their centres. Positive when the pair is
- * concave (computeCreaseCost()'s test), negative when convex; 0 for coincident centres or
- * zero normals. */
+ * concave (computeCreaseCost()'s test), negative when convex; NaN when it cannot be measured
+ * (coincident centres, a zero or non-finite normal: a degenerate face). */
 double
 crossingCurvature(const Eigen::Vector3d& centre_a, const Eigen::Vector3d& normal_a,
                   const Eigen::Vector3d& centre_b, const Eigen::Vector3d& normal_b);
@@ -42,8 +42,9 @@ constexpr double kFlatBoundaryCurvature = 2.0;
  * labels are joined when the weighted median of |curvature| over the edges between them, times
  * \a diagonal, is at most kFlatBoundaryCurvature: most of their boundary curves less than the
  * shape's bounding sphere. The median, not the mean, so that the few edges where a flat
- * boundary meets a crease do not count. The flattest pair is joined first and the boundaries
- * are measured again, until no pair is flat.
+ * boundary meets a crease do not count. Edges of unknown curvature or without weight are left
+ * out. The flattest pair is joined first and the boundaries are measured again, until no pair
+ * is flat.
  * \param[in] labels one label in [0, num_labels) per element
  * \param[in] num_labels number of labels
  * \param[in] edges the surface graph
