@@ -37,16 +37,12 @@ std::vector<int>
 joinFlatBoundaries(const std::vector<int>& labels, int num_labels,
                    const std::vector<BoundaryEdge>& edges, double diagonal)
 {
-  std::vector<int> group(std::max(num_labels, 0));
-  std::iota(group.begin(), group.end(), 0);
+  // root[l]: the lowest label of l's group. Labels are few (the parts of one shape), so a
+  // join simply renames the joined group.
+  std::vector<int> root(std::max(num_labels, 0));
+  std::iota(root.begin(), root.end(), 0);
   if (num_labels < 2 || !(diagonal > 0.0))
-    return group;
-  // Groups are joined into their lowest label, so a group's id is its lowest label throughout.
-  auto find = [&group](int l) {
-    while (group[l] != l)
-      l = group[l] = group[group[l]];
-    return l;
-  };
+    return root;
   // Joining only removes boundaries: the edges between different labels are all there is.
   std::vector<BoundaryEdge> crossing;
   // An edge whose curvature is unknown (a degenerate face) tells nothing either way.
@@ -58,7 +54,7 @@ joinFlatBoundaries(const std::vector<int>& labels, int num_labels,
   for (;;) {
     boundaries.clear();
     for (const BoundaryEdge& e : crossing) {
-      const int ga = find(labels[e.a]), gb = find(labels[e.b]);
+      const int ga = root[labels[e.a]], gb = root[labels[e.b]];
       if (ga != gb)
         boundaries[{std::min(ga, gb), std::max(ga, gb)}].emplace_back(
             std::abs(e.curvature) * diagonal, e.weight);
@@ -85,18 +81,16 @@ joinFlatBoundaries(const std::vector<int>& labels, int num_labels,
     }
     if (join.first < 0)
       break;
-    group[join.second] = join.first;
+    std::replace(root.begin(), root.end(), join.second, join.first);
   }
-  std::vector<int> dense(group.size(), -1);
+  // Dense group numbers, in the order of each group's lowest label.
+  std::vector<int> dense(root.size(), -1), group(root.size());
   int count = 0;
   for (int l = 0; l < num_labels; ++l) {
-    const int root = find(l);
-    if (dense[root] < 0)
-      dense[root] = count++;
-    group[l] = root;
+    if (dense[root[l]] < 0)
+      dense[root[l]] = count++;
+    group[l] = dense[root[l]];
   }
-  for (int l = 0; l < num_labels; ++l)
-    group[l] = dense[group[l]];
   return group;
 }
 
