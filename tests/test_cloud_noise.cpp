@@ -110,8 +110,11 @@ TEST_P(NoisyPsbCloud, KeepsItsPartsAndFindsTheNoise)
 // with mirror-related normals. It is a weak case: in about a third of the noise draws seat and
 // back still grow into one part (1 − RI near 0.4; bench_noise --kind cloud --models 101
 // --levels 0.5 with --seed-offset 0..5), and this draw is one of them. Glasses 41: two thin lens
-// plates joined at the bridge. Box 321, a box with a smaller box on top, is a weak case: its
-// noisy faces leave medial foam that one segmentation cuts into extra parts. Bearing 346: its
+// plates joined at the bridge. Box 321, a box with a smaller box on top: the medial axis splits
+// the box where its thickness changes, and the cut runs across flat faces; measured between
+// the mean normals of their two sides, those boundaries are flat and the parts are joined
+// (compared pair by pair, the noise in the normals makes them curve 3–4 times the limit, and
+// this draw keeps 3 parts). Bearing 346: its
 // two shaft cylinders differ by 15 % in radius, and the spikes of the noisy surface fill both
 // cylinders' radius histograms with every radius up to theirs. Counted, they bring the two
 // histograms within the merging's EMD limit and the shaft becomes one part in this draw;
@@ -126,7 +129,7 @@ INSTANTIATE_TEST_SUITE_P(
                       NoisyCloudCase{346, 0.0, 0.05, 3, 2476743862870366952ull},
                       NoisyCloudCase{346, 0.5, 0.05, 3, 17811072805317492061ull},
                       NoisyCloudCase{41, 0.5, 0.15, 8, 9745792933633437430ull},
-                      NoisyCloudCase{321, 0.5, 0.45, 3, 4241340310826180928ull},
+                      NoisyCloudCase{321, 0.5, 0.05, 2, 10989437029408341162ull},
                       NoisyCloudCase{26, 0.3, 0.05, 2, 18237015744876667302ull}),
     [](const ::testing::TestParamInfo<NoisyCloudCase>& info) {
       return "psb" + std::to_string(info.param.model) + "_sigma_" +

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <utility>
 
 using namespace segmat;
 using detail::BoundaryEdge;
@@ -97,4 +99,82 @@ TEST(FlatBoundaries, FlattestFirstThenMeasuredAgain)
   const std::vector<BoundaryEdge> one_flat{{0, 1, 5.0, 1.0}, {1, 2, 0.0, 1.0}};
   // Elements 0, 1, 2 carry labels 2, 0, 1: the flat boundary joins labels 0 and 1.
   EXPECT_EQ(detail::joinFlatBoundaries(apart, 3, one_flat, 1.0), (std::vector<int>{0, 0, 1}));
+}
+
+namespace {
+/// A 51 × 51 grid of points 0.02 apart over the unit square of the xy-plane, each joined to its
+/// 8 neighbours; points with x > 0.5 are label 1, the others label 0. With \a fold_degrees the
+/// half x > 0.5 rises at that slope. Every normal is the surface's, tilted by a random turn of
+/// \a noise_degrees (standard deviation per axis, fixed seed).
+struct GridSurface
+{
+  std::vector<Eigen::Vector3d> positions, normals;
+  std::vector<int> labels;
+  std::vector<BoundaryEdge> edges;
+};
+
+GridSurface
+gridSurface(double fold_degrees, double noise_degrees)
+{
+  constexpr int kSide = 51;
+  constexpr double kStep = 0.02;
+  const double slope = std::tan(fold_degrees * M_PI / 180.0);
+  std::mt19937 random(7);
+  std::normal_distribution<double> turn(0.0, noise_degrees * M_PI / 180.0);
+  GridSurface s;
+  for (int i = 0; i < kSide; ++i)
+    for (int j = 0; j < kSide; ++j) {
+      const double x = i * kStep, y = j * kStep;
+      const bool raised = x > 0.5;
+      s.positions.emplace_back(x, y, raised ? slope * (x - 0.5) : 0.0);
+      const Eigen::Vector3d n =
+          raised ? Eigen::Vector3d(-slope, 0.0, 1.0).normalized() : Eigen::Vector3d::UnitZ();
+      const double tx = turn(random), ty = turn(random);
+      s.normals.push_back((n + Eigen::Vector3d(tx, ty, 0.0)).normalized());
+      s.labels.push_back(raised ? 1 : 0);
+    }
+  for (int i = 0; i < kSide; ++i)
+    for (int j = 0; j < kSide; ++j)
+      for (const auto& [di, dj] : {std::pair{1, 0}, {0, 1}, {1, 1}, {1, -1}}) {
+        const int k = i + di, l = j + dj;
+        if (k < kSide && l >= 0 && l < kSide) {
+          const int a = i * kSide + j, b = k * kSide + l;
+          s.edges.push_back({a, b,
+                             detail::crossingCurvature(s.positions[a], s.normals[a],
+                                                       s.positions[b], s.normals[b]),
+                             1.0});
+        }
+      }
+  return s;
+}
+} // namespace
+
+TEST(FlatBoundaries, SideMeansTellNoisyNormalsFromAFold)
+{
+  const double diagonal = std::sqrt(2.0);
+  // A flat boundary with normals turned by 3° of noise: pair by pair, neighbouring normals
+  // differ by about 4° over 0.02, a curvature of about 5 diagonals⁻¹, and nothing is joined.
+  GridSurface flat = gridSurface(0.0, 3.0);
+  EXPECT_EQ(detail::joinFlatBoundaries(flat.labels, 2, flat.edges, diagonal),
+            (std::vector<int>{0, 1}));
+  // Between the means of the two sides the noise averages out: the boundary is flat.
+  const std::vector<BoundaryEdge> measured_before = flat.edges;
+  detail::measureSideCurvatures(flat.edges, flat.labels, flat.positions, flat.normals);
+  EXPECT_EQ(detail::joinFlatBoundaries(flat.labels, 2, flat.edges, diagonal),
+            (std::vector<int>{0, 0}));
+  // Only boundary edges are measured again.
+  int changed = 0;
+  for (std::size_t e = 0; e < flat.edges.size(); ++e) {
+    const bool boundary = flat.labels[flat.edges[e].a] != flat.labels[flat.edges[e].b];
+    if (!boundary)
+      EXPECT_EQ(flat.edges[e].curvature, measured_before[e].curvature);
+    changed += boundary;
+  }
+  EXPECT_EQ(changed, 3 * 51 - 2); // straight and diagonal edges across x = 0.5
+
+  // A 20° fold under the same noise stays a boundary: each side keeps its own plane.
+  GridSurface fold = gridSurface(20.0, 3.0);
+  detail::measureSideCurvatures(fold.edges, fold.labels, fold.positions, fold.normals);
+  EXPECT_EQ(detail::joinFlatBoundaries(fold.labels, 2, fold.edges, diagonal),
+            (std::vector<int>{0, 1}));
 }

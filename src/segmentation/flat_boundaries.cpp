@@ -94,6 +94,62 @@ joinFlatBoundaries(const std::vector<int>& labels, int num_labels,
   return group;
 }
 
+void
+measureSideCurvatures(std::vector<BoundaryEdge>& edges, const std::vector<int>& labels,
+                      const std::vector<Eigen::Vector3d>& positions,
+                      const std::vector<Eigen::Vector3d>& normals)
+{
+  const int n = static_cast<int>(labels.size());
+  // Adjacency in CSR form.
+  std::vector<int> start(static_cast<std::size_t>(n) + 1, 0);
+  for (const BoundaryEdge& e : edges) {
+    ++start[e.a + 1];
+    ++start[e.b + 1];
+  }
+  for (int i = 0; i < n; ++i)
+    start[i + 1] += start[i];
+  std::vector<int> adjacent(start.back()), cursor(start.begin(), start.end() - 1);
+  for (const BoundaryEdge& e : edges) {
+    adjacent[cursor[e.a]++] = e.b;
+    adjacent[cursor[e.b]++] = e.a;
+  }
+  std::vector<int> seen(n, -1), frontier, next;
+  int stamp = 0;
+  // Mean position and summed normal of the elements of \a from's label within kSideSteps.
+  const auto side = [&](int from, Eigen::Vector3d& centre, Eigen::Vector3d& normal) {
+    ++stamp;
+    seen[from] = stamp;
+    frontier.assign(1, from);
+    centre = positions[from];
+    normal = normals[from];
+    int count = 1;
+    for (int step = 0; step < kSideSteps; ++step) {
+      next.clear();
+      for (int i : frontier)
+        for (int k = start[i]; k < start[i + 1]; ++k) {
+          const int j = adjacent[k];
+          if (seen[j] == stamp || labels[j] != labels[from])
+            continue;
+          seen[j] = stamp;
+          next.push_back(j);
+          centre += positions[j];
+          normal += normals[j];
+          ++count;
+        }
+      frontier.swap(next);
+    }
+    centre /= double(count);
+  };
+  for (BoundaryEdge& e : edges) {
+    if (labels[e.a] == labels[e.b])
+      continue;
+    Eigen::Vector3d ca, na, cb, nb;
+    side(e.a, ca, na);
+    side(e.b, cb, nb);
+    e.curvature = crossingCurvature(ca, na, cb, nb);
+  }
+}
+
 pcl::PointIndices
 joinParts(const std::vector<pcl::PointIndices>& parts, const std::vector<int>& members)
 {

@@ -22,6 +22,16 @@ struct BoundaryEdge
   double weight = 1.0;    ///< share of the boundary: the shared edge's length, or 1 per point pair
 };
 
+/** \brief A transfer's surface graph, as the flat-boundary rule reads it. */
+struct BoundaryGraph
+{
+  std::vector<BoundaryEdge> edges;
+  /// Per element, its estimated normal (a cloud's points). When present, the curvature across
+  /// a boundary is measured between the two sides' means (measureSideCurvatures()), and the
+  /// edges' own curvatures are not read. Empty for a mesh: face normals are exact.
+  std::vector<Eigen::Vector3d> normals;
+};
+
 /** \brief Curvature of the surface across two neighbouring elements: the angle between their
  * outward normals (radians) over the distance between their centres. Positive when the pair is
  * concave (computeCreaseCost()'s test), negative when convex; NaN when it cannot be measured
@@ -54,6 +64,27 @@ constexpr double kFlatBoundaryCurvature = 2.0;
 std::vector<int>
 joinFlatBoundaries(const std::vector<int>& labels, int num_labels,
                    const std::vector<BoundaryEdge>& edges, double diagonal);
+
+/** \brief Steps of the neighbour graph that one side of a cloud's boundary spans
+ * (measureSideCurvatures()). A cloud's normals are fitted to 16 neighbours, a radius of about
+ * two point spacings, so neighbouring normals share most of their points and their noise:
+ * averaged over one or two steps (of a 10-neighbour graph, about 1.5 spacings each) the noise
+ * stays. Three steps reach about twice the normals' own radius. */
+constexpr int kSideSteps = 3;
+
+/** \brief Measures the curvature across every edge between two labels between the edge's two
+ * sides: each end's label's elements within kSideSteps steps of it over \a edges (through that
+ * label only), by crossingCurvature() of their mean positions and mean normals. A fold stays a
+ * fold, since each side averages its own part of the surface; noise in the normals averages out.
+ * Edges inside a label keep their curvature.
+ * \param[in,out] edges the surface graph; the curvature of each boundary edge is replaced
+ * \param[in] labels one label per element
+ * \param[in] positions each element's position
+ * \param[in] normals each element's normal */
+void
+measureSideCurvatures(std::vector<BoundaryEdge>& edges, const std::vector<int>& labels,
+                      const std::vector<Eigen::Vector3d>& positions,
+                      const std::vector<Eigen::Vector3d>& normals);
 
 /** \brief The MAT-graph nodes of a label that joins \a members of \a parts: their nodes,
  * ascending. */

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <numeric>
 #include <utility>
@@ -103,7 +104,7 @@ namespace {
 /// length (what joinFlatBoundaries() reads).
 std::vector<PottsEdge>
 meshSmoothnessEdges(const TriangleMesh& mesh, double omega, CreaseModel model,
-                    std::vector<detail::BoundaryEdge>* boundary)
+                    detail::BoundaryGraph* boundary)
 {
   const std::vector<FaceAdjacency> adjacency = mesh.faceAdjacency();
   const std::vector<int> signs = computeOutwardFaceSigns(mesh, adjacency);
@@ -115,13 +116,13 @@ meshSmoothnessEdges(const TriangleMesh& mesh, double omega, CreaseModel model,
   }
   std::vector<PottsEdge> edges(adjacency.size());
   if (boundary)
-    boundary->resize(adjacency.size());
+    boundary->edges.resize(adjacency.size());
   for (std::size_t k = 0; k < adjacency.size(); ++k) {
     const int a = adjacency[k].face_a, b = adjacency[k].face_b;
     edges[k] = {a, b,
                 computeCreaseCost(centroids[a], normals[a], centroids[b], normals[b], omega, model)};
     if (boundary)
-      (*boundary)[k] = {a, b,
+      boundary->edges[k] = {a, b,
                         detail::crossingCurvature(centroids[a], normals[a], centroids[b],
                                                   normals[b]),
                         (mesh.vertices[adjacency[k].v0] - mesh.vertices[adjacency[k].v1]).norm()};
@@ -139,16 +140,17 @@ computeMeshSmoothnessEdges(const TriangleMesh& mesh, double omega, CreaseModel m
 
 namespace {
 
-/// computeCloudSmoothnessEdges(), and with \a boundary (and normals) each edge's crossing
-/// curvature, weight 1.
+/// computeCloudSmoothnessEdges(), and with \a boundary (and normals) the point pairs, weight 1,
+/// and the points' normals: a boundary's curvature is measured between its sides once the
+/// labels are known.
 std::vector<PottsEdge>
 cloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
                      const pcl::PointCloud<pcl::Normal>::ConstPtr& normals,
                      const std::vector<int>& nodes, int k, double omega, CreaseModel model,
-                     unsigned int threads, std::vector<detail::BoundaryEdge>* boundary)
+                     unsigned int threads, detail::BoundaryGraph* boundary)
 {
   if (boundary)
-    boundary->clear();
+    *boundary = {};
   std::vector<PottsEdge> edges;
   if (!cloud || nodes.size() < 2 || k < 1)
     return edges;
@@ -197,12 +199,17 @@ cloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
 
   // Per-edge scale so that cutting a cloud costs about what cutting the mesh does (see header).
   const double degree_scale = 2.0 / k;
+  constexpr double kUnmeasured = std::numeric_limits<double>::quiet_NaN();
   // Without normals every edge costs what a flat edge costs on a mesh.
   const double flat = computeCreaseCost(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(),
                                         Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), omega);
   edges.reserve(pairs.size());
-  if (boundary && normals)
-    boundary->reserve(pairs.size());
+  if (boundary && normals) {
+    boundary->edges.reserve(pairs.size());
+    boundary->normals.resize(nodes.size());
+    for (int a = 0; a < num_nodes; ++a)
+      boundary->normals[a] = (*normals)[nodes[a]].getNormalVector3fMap().cast<double>();
+  }
   for (const auto& p : pairs) {
     double w = flat;
     if (normals) {
@@ -213,7 +220,7 @@ cloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
                             nb = (*normals)[ib].getNormalVector3fMap().cast<double>();
       w = computeCreaseCost(ca, na, cb, nb, omega, model);
       if (boundary) // without normals nothing tells a flat boundary: none is joined
-        boundary->push_back({p.first, p.second, detail::crossingCurvature(ca, na, cb, nb), 1.0});
+        boundary->edges.push_back({p.first, p.second, kUnmeasured, 1.0});
     }
     edges.push_back({p.first, p.second, std::floor(w * degree_scale)});
   }
@@ -359,12 +366,20 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
   // lowest part.
   std::vector<int> group(kept.size());
   std::iota(group.begin(), group.end(), 0);
-  if (join_flat_boundaries_ && kept.size() > 1 && boundary_ && !boundary_->empty()) {
+  if (join_flat_boundaries_ && kept.size() > 1 && boundary_ && !boundary_->edges.empty()) {
     Eigen::AlignedBox3d box;
     for (const Eigen::Vector3d& p : positions)
       if (p.allFinite())
         box.extend(p);
-    group = detail::joinFlatBoundaries(labels, static_cast<int>(kept.size()), *boundary_,
+    // Estimated normals are measured between the boundaries' sides, on a copy: the graph is
+    // kept for the next transfer.
+    std::vector<detail::BoundaryEdge> sided;
+    if (!boundary_->normals.empty()) {
+      sided = boundary_->edges;
+      detail::measureSideCurvatures(sided, labels, positions, boundary_->normals);
+    }
+    group = detail::joinFlatBoundaries(labels, static_cast<int>(kept.size()),
+                                       sided.empty() ? boundary_->edges : sided,
                                        box.isEmpty() ? 0.0 : box.diagonal().norm());
   }
   std::vector<int> named(kept.size(), -1);
@@ -392,10 +407,10 @@ LabelTransferBase::setJoinFlatBoundaries(bool join)
   join_flat_boundaries_ = join;
 }
 
-std::vector<detail::BoundaryEdge>*
+detail::BoundaryGraph*
 LabelTransferBase::newBoundary()
 {
-  boundary_ = std::make_shared<std::vector<detail::BoundaryEdge>>();
+  boundary_ = std::make_shared<detail::BoundaryGraph>();
   return boundary_.get();
 }
 

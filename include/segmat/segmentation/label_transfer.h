@@ -19,7 +19,7 @@
 namespace segmat {
 
 namespace detail {
-struct BoundaryEdge;
+struct BoundaryGraph;
 } // namespace detail
 
 /** \brief SEG-MAT's integer energy scale (reference `int enlarge = 10e4`, i.e. 1e5). Terms are
@@ -335,14 +335,14 @@ protected:
   double edges_omega_ = 0.0;
   CreaseModel edges_crease_ = CreaseModel::SharpConcave;
   /** \brief A new, empty boundary list for the smoothness edges being built. */
-  std::vector<detail::BoundaryEdge>*
+  detail::BoundaryGraph*
   newBoundary();
 
   AlphaExpansion solver_;
   std::vector<std::vector<int>> label_parts_;
   bool join_flat_boundaries_ = true;
-  /// Per smoothness edge, its curvature across and weight (joinFlatBoundaries()).
-  std::shared_ptr<std::vector<detail::BoundaryEdge>> boundary_;
+  /// The smoothness edges as joinFlatBoundaries() reads them.
+  std::shared_ptr<detail::BoundaryGraph> boundary_;
 };
 
 /** \brief Carries parts of the MAT graph to the faces of a triangle mesh by α-expansion
