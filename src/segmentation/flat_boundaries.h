@@ -28,7 +28,10 @@ struct BoundaryGraph
   std::vector<BoundaryEdge> edges;
   /// Per element, its estimated normal (a cloud's points). When present, the curvature across
   /// a boundary is measured between the two sides' means (measureSideCurvatures()), and the
-  /// edges' own curvatures are not read. Empty for a mesh: face normals are exact.
+  /// edges' own curvatures are not read. Empty for a mesh: its face normals are exact, and on
+  /// a coarse mesh a side of a few steps reaches across a crease onto the next flat face, in
+  /// a share that the other side does not mirror (a flat boundary across a bar of 2 × 2 quads
+  /// a side then curves above the limit).
   std::vector<Eigen::Vector3d> normals;
 };
 
