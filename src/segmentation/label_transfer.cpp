@@ -122,10 +122,9 @@ meshSmoothnessEdges(const TriangleMesh& mesh, double omega, CreaseModel model,
     edges[k] = {a, b,
                 computeCreaseCost(centroids[a], normals[a], centroids[b], normals[b], omega, model)};
     if (boundary)
-      boundary->edges[k] = {a, b,
-                        detail::crossingCurvature(centroids[a], normals[a], centroids[b],
-                                                  normals[b]),
-                        (mesh.vertices[adjacency[k].v0] - mesh.vertices[adjacency[k].v1]).norm()};
+      boundary->edges[k] = {
+          a, b, detail::crossingCurvature(centroids[a], normals[a], centroids[b], normals[b]),
+          (mesh.vertices[adjacency[k].v0] - mesh.vertices[adjacency[k].v1]).norm()};
   }
   return edges;
 }
