@@ -115,20 +115,25 @@ measureSideCurvatures(std::vector<BoundaryEdge>& edges, const std::vector<int>& 
   }
   std::vector<int> seen(n, -1), frontier, next;
   int stamp = 0;
-  // Mean position and summed normal of the elements of \a from's label within kSideSteps.
+  // Mean position and summed normal of the elements of \a from's label within kSideSteps,
+  // through elements that turn less than a crease from \a from.
+  const double crease_cosine = std::cos(kSideCreaseDegrees * M_PI / 180.0);
   const auto side = [&](int from, Eigen::Vector3d& centre, Eigen::Vector3d& normal) {
     ++stamp;
     seen[from] = stamp;
     frontier.assign(1, from);
     centre = positions[from];
     normal = normals[from];
+    const double length = normal.norm();
     int count = 1;
-    for (int step = 0; step < kSideSteps; ++step) {
+    for (int step = 0; step < kSideSteps && length > 0.0; ++step) {
       next.clear();
       for (int i : frontier)
         for (int k = start[i]; k < start[i + 1]; ++k) {
           const int j = adjacent[k];
-          if (seen[j] == stamp || labels[j] != labels[from])
+          if (seen[j] == stamp || labels[j] != labels[from] ||
+              !(normals[j].dot(normals[from]) >= crease_cosine * normals[j].norm() * length &&
+                normals[j].dot(normals[from]) > 0.0))
             continue;
           seen[j] = stamp;
           next.push_back(j);

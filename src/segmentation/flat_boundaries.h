@@ -18,21 +18,17 @@ namespace detail {
 struct BoundaryEdge
 {
   int a = -1, b = -1;     ///< the two elements
-  double curvature = 0.0; ///< crossingCurvature() of the pair (NaN: unknown, not counted)
+  double curvature = 0.0; ///< across the pair (measureSideCurvatures(); NaN: unknown, not counted)
   double weight = 1.0;    ///< share of the boundary: the shared edge's length, or 1 per point pair
 };
 
-/** \brief A transfer's surface graph, as the flat-boundary rule reads it. */
+/** \brief A transfer's surface graph, as the flat-boundary rule reads it: the element pairs
+ * (faces sharing an edge, or neighbouring points) and each element's outward normal. The
+ * curvature across a boundary is measured between its two sides (measureSideCurvatures()). */
 struct BoundaryGraph
 {
   std::vector<BoundaryEdge> edges;
-  /// Per element, its estimated normal (a cloud's points). When present, the curvature across
-  /// a boundary is measured between the two sides' means (measureSideCurvatures()), and the
-  /// edges' own curvatures are not read. Empty for a mesh: its face normals are exact, and on
-  /// a coarse mesh a side of a few steps reaches across a crease onto the next flat face, in
-  /// a share that the other side does not mirror (a flat boundary across a bar of 2 × 2 quads
-  /// a side then curves above the limit).
-  std::vector<Eigen::Vector3d> normals;
+  std::vector<Eigen::Vector3d> normals; ///< per element
 };
 
 /** \brief Curvature of the surface across two neighbouring elements: the angle between their
@@ -68,18 +64,29 @@ std::vector<int>
 joinFlatBoundaries(const std::vector<int>& labels, int num_labels,
                    const std::vector<BoundaryEdge>& edges, double diagonal);
 
-/** \brief Steps of the neighbour graph that one side of a cloud's boundary spans
- * (measureSideCurvatures()). A cloud's normals are fitted to 16 neighbours, a radius of about
- * two point spacings, so neighbouring normals share most of their points and their noise:
- * averaged over one or two steps (of a 10-neighbour graph, about 1.5 spacings each) the noise
- * stays. Three steps reach about twice the normals' own radius. */
+/** \brief Steps of the surface graph that one side of a boundary spans
+ * (measureSideCurvatures()). Normals turn from one element to the next by whatever noise the
+ * surface still has. A cloud's normals are fitted to 16 neighbours, a radius of about two point
+ * spacings, so neighbouring normals share most of their points and their noise: averaged over
+ * one or two steps of the 10-neighbour graph (about 1.5 spacings each) the noise stays, and
+ * three steps reach about twice the fits' radius. On a mesh three steps of the face graph take
+ * up to about 20 faces a side. */
 constexpr int kSideSteps = 3;
+
+/** \brief A side stops at a crease: an element whose normal turns from the side's first one
+ * by this much or more is left out, and the side does not spread through it. 45° is where the
+ * bilateral normal filter's range weight (σ_r = 0.35) falls below a tenth. On a coarse mesh a
+ * side would otherwise reach across a crease onto the next flat face, in a share that the
+ * other side need not mirror (MeshLabelTransfer.BarSplitsAtTheMiddle). */
+constexpr double kSideCreaseDegrees = 45.0;
 
 /** \brief Measures the curvature across every edge between two labels between the edge's two
  * sides: each end's label's elements within kSideSteps steps of it over \a edges (through that
- * label only), by crossingCurvature() of their mean positions and mean normals. A fold stays a
- * fold, since each side averages its own part of the surface; noise in the normals averages out.
- * Edges inside a label keep their curvature.
+ * label only, and short of kSideCreaseDegrees), by crossingCurvature() of their mean positions
+ * and mean normals. A fold stays a fold, since each side averages its own part of the surface;
+ * noise in the normals averages out. Along a boundary that runs around a tube, pairs of
+ * elements turn with the tube, while the two sides' means turn only as the surface does across
+ * the boundary. Edges inside a label keep their curvature.
  * \param[in,out] edges the surface graph; the curvature of each boundary edge is replaced
  * \param[in] labels one label per element
  * \param[in] positions each element's position

@@ -100,8 +100,11 @@ computeCreaseCost(const Eigen::Vector3d& centre_a, const Eigen::Vector3d& normal
 
 namespace {
 
-/// computeMeshSmoothnessEdges(), and with \a boundary each edge's crossing curvature and
-/// length (what joinFlatBoundaries() reads).
+/// A boundary edge's curvature until measureSideCurvatures() measures it.
+constexpr double kUnmeasured = std::numeric_limits<double>::quiet_NaN();
+
+/// computeMeshSmoothnessEdges(), and with \a boundary the face pairs, each weighted by its
+/// shared edge's length, and the outward face normals.
 std::vector<PottsEdge>
 meshSmoothnessEdges(const TriangleMesh& mesh, double omega, CreaseModel model,
                     detail::BoundaryGraph* boundary)
@@ -115,15 +118,17 @@ meshSmoothnessEdges(const TriangleMesh& mesh, double omega, CreaseModel model,
     centroids[f] = mesh.faceCentroid(f);
   }
   std::vector<PottsEdge> edges(adjacency.size());
-  if (boundary)
+  if (boundary) {
     boundary->edges.resize(adjacency.size());
+    boundary->normals = normals;
+  }
   for (std::size_t k = 0; k < adjacency.size(); ++k) {
     const int a = adjacency[k].face_a, b = adjacency[k].face_b;
     edges[k] = {a, b,
                 computeCreaseCost(centroids[a], normals[a], centroids[b], normals[b], omega, model)};
     if (boundary)
       boundary->edges[k] = {
-          a, b, detail::crossingCurvature(centroids[a], normals[a], centroids[b], normals[b]),
+          a, b, kUnmeasured,
           (mesh.vertices[adjacency[k].v0] - mesh.vertices[adjacency[k].v1]).norm()};
   }
   return edges;
@@ -140,8 +145,7 @@ computeMeshSmoothnessEdges(const TriangleMesh& mesh, double omega, CreaseModel m
 namespace {
 
 /// computeCloudSmoothnessEdges(), and with \a boundary (and normals) the point pairs, weight 1,
-/// and the points' normals: a boundary's curvature is measured between its sides once the
-/// labels are known.
+/// and the points' normals.
 std::vector<PottsEdge>
 cloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
                      const pcl::PointCloud<pcl::Normal>::ConstPtr& normals,
@@ -198,7 +202,6 @@ cloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
 
   // Per-edge scale so that cutting a cloud costs about what cutting the mesh does (see header).
   const double degree_scale = 2.0 / k;
-  constexpr double kUnmeasured = std::numeric_limits<double>::quiet_NaN();
   // Without normals every edge costs what a flat edge costs on a mesh.
   const double flat = computeCreaseCost(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(),
                                         Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), omega);
@@ -370,15 +373,10 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
     for (const Eigen::Vector3d& p : positions)
       if (p.allFinite())
         box.extend(p);
-    // Estimated normals are measured between the boundaries' sides, on a copy: the graph is
-    // kept for the next transfer.
-    std::vector<detail::BoundaryEdge> sided;
-    if (!boundary_->normals.empty()) {
-      sided = boundary_->edges;
-      detail::measureSideCurvatures(sided, labels, positions, boundary_->normals);
-    }
-    group = detail::joinFlatBoundaries(labels, static_cast<int>(kept.size()),
-                                       sided.empty() ? boundary_->edges : sided,
+    // Measured on a copy: the graph is kept for the next transfer.
+    std::vector<detail::BoundaryEdge> measured = boundary_->edges;
+    detail::measureSideCurvatures(measured, labels, positions, boundary_->normals);
+    group = detail::joinFlatBoundaries(labels, static_cast<int>(kept.size()), measured,
                                        box.isEmpty() ? 0.0 : box.diagonal().norm());
   }
   std::vector<int> named(kept.size(), -1);
