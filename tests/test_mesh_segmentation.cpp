@@ -6,6 +6,7 @@
 #include <segmat/io/seg.h>
 #include <segmat/segmentation/mesh_segmentation.h>
 
+#include <util/flat_join_scoring.h>
 #include <util/label_hash.h>
 
 #include <gtest/gtest.h>
@@ -233,17 +234,7 @@ TEST(MeshSegmentation, FlatBoundariesAreJoined)
   PsbEvaluator evaluator;
   ASSERT_TRUE(evaluator.setInputMesh(*mesh));
   const auto segment = [&](bool join, double& rand_distance) {
-    MeshSegmentation seg;
-    seg.setInputMesh(mesh);
-    seg.setJitterSeed(3);
-    seg.setJoinFlatBoundaries(join);
-    std::vector<int> labels;
-    EXPECT_TRUE(seg.segment(labels));
-    PsbScores mean;
-    EXPECT_TRUE(evaluator.scoreAgainstAll(labels, humans, mean));
-    rand_distance = mean.RI;
-    EXPECT_EQ(seg.getMatParts().size(), std::set<int>(labels.begin(), labels.end()).size());
-    return std::set<int>(labels.begin(), labels.end()).size();
+    return test::segmentWithFlatJoin(mesh, evaluator, humans, join, 3, rand_distance);
   };
   double apart = 0.0, joined = 0.0;
   EXPECT_EQ(segment(false, apart), 4u);

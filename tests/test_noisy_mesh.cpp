@@ -13,6 +13,7 @@
 #include <segmat/segmentation/mesh_segmentation.h>
 
 #include "util/cloud_sampler.h"
+#include "util/flat_join_scoring.h"
 #include "util/label_hash.h"
 
 #include <gtest/gtest.h>
@@ -155,15 +156,7 @@ TEST(NoisyMesh, CylinderCutAroundItsSideIsJoined)
   ASSERT_TRUE(evaluator.setInputMesh(*mesh));
   test::addGaussianNoise(*mesh, 0.005, 326u * 1000u + 50u);
   const auto segment = [&](bool join, double& rand_distance) {
-    MeshSegmentation seg;
-    seg.setInputMesh(mesh);
-    seg.setJoinFlatBoundaries(join);
-    std::vector<int> labels;
-    EXPECT_TRUE(seg.segment(labels));
-    PsbScores mean;
-    EXPECT_TRUE(evaluator.scoreAgainstAll(labels, humans, mean));
-    rand_distance = mean.RI;
-    return std::set<int>(labels.begin(), labels.end()).size();
+    return test::segmentWithFlatJoin(mesh, evaluator, humans, join, 0, rand_distance);
   };
   double apart = 0.0, joined = 0.0;
   EXPECT_EQ(segment(false, apart), 5u);

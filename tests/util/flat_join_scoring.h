@@ -1,0 +1,22 @@
+// A PSB mesh segmented with and without the flat-boundary rule, scored against its humans.
+#pragma once
+
+#include <segmat/evaluation/psb_metrics.h>
+#include <segmat/geometry/triangle_mesh.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace segmat {
+namespace test {
+
+/** \brief Segments \a mesh (jitter seed \a jitter) with the flat-boundary rule on or off, checks
+ * that getMatParts() has one entry per label, and returns the number of parts; \a rand_distance
+ * gets the mean 1 − RI against \a humans, scored by \a evaluator. */
+std::size_t
+segmentWithFlatJoin(const TriangleMesh::Ptr& mesh, const PsbEvaluator& evaluator,
+                    const std::vector<std::vector<int>>& humans, bool join, unsigned int jitter,
+                    double& rand_distance);
+
+} // namespace test
+} // namespace segmat
