@@ -227,18 +227,12 @@ TEST(MeshSegmentation, FlatBoundariesAreJoined)
   // Joining the parts whose boundary crosses flat surface gives the two boxes back.
   const std::string dir = std::string(SEGMAT_DATA_DIR) + "/psb321/";
   const auto mesh = std::make_shared<TriangleMesh>(io::loadOff(dir + "321.off"));
-  std::vector<std::vector<int>> humans;
-  for (int k = 0; k < 4; ++k)
-    humans.push_back(io::loadSeg(dir + "seg/321_" + std::to_string(k) + ".seg",
-                                 static_cast<long>(mesh->numFaces())));
+  const auto humans = test::loadHumans(dir + "seg/321_", 4, mesh->numFaces());
   PsbEvaluator evaluator;
   ASSERT_TRUE(evaluator.setInputMesh(*mesh));
-  const auto segment = [&](bool join, double& rand_distance) {
-    return test::segmentWithFlatJoin(mesh, evaluator, humans, join, 3, rand_distance);
-  };
   double apart = 0.0, joined = 0.0;
-  EXPECT_EQ(segment(false, apart), 4u);
-  EXPECT_EQ(segment(true, joined), 2u);
+  EXPECT_EQ(test::segmentWithFlatJoin(mesh, evaluator, humans, false, 3, apart), 4u);
+  EXPECT_EQ(test::segmentWithFlatJoin(mesh, evaluator, humans, true, 3, joined), 2u);
   EXPECT_GT(apart, 0.3);
   EXPECT_LT(joined, 0.1);
 }

@@ -148,19 +148,13 @@ TEST(NoisyMesh, CylinderCutAroundItsSideIsJoined)
 {
   const std::string dir = std::string(SEGMAT_SHARED_DATA_DIR) + "/psb-dev/";
   auto mesh = std::make_shared<TriangleMesh>(io::loadOff(dir + "off/326.off"));
-  std::vector<std::vector<int>> humans;
-  for (int k = 0; k < 4; ++k)
-    humans.push_back(io::loadSeg(dir + "seg/Benchmark/326/326_" + std::to_string(k) + ".seg",
-                                 static_cast<long>(mesh->numFaces())));
+  const auto humans = test::loadHumans(dir + "seg/Benchmark/326/326_", 4, mesh->numFaces());
   PsbEvaluator evaluator;
   ASSERT_TRUE(evaluator.setInputMesh(*mesh));
   test::addGaussianNoise(*mesh, 0.005, 326u * 1000u + 50u);
-  const auto segment = [&](bool join, double& rand_distance) {
-    return test::segmentWithFlatJoin(mesh, evaluator, humans, join, 0, rand_distance);
-  };
   double apart = 0.0, joined = 0.0;
-  EXPECT_EQ(segment(false, apart), 5u);
-  EXPECT_EQ(segment(true, joined), 2u);
+  EXPECT_EQ(test::segmentWithFlatJoin(mesh, evaluator, humans, false, 0, apart), 5u);
+  EXPECT_EQ(test::segmentWithFlatJoin(mesh, evaluator, humans, true, 0, joined), 2u);
   EXPECT_GT(apart, 0.2);
   EXPECT_LT(joined, 0.12);
 }

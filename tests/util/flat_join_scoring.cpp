@@ -1,5 +1,6 @@
 #include "flat_join_scoring.h"
 
+#include <segmat/io/seg.h>
 #include <segmat/segmentation/mesh_segmentation.h>
 
 #include <gtest/gtest.h>
@@ -8,6 +9,16 @@
 
 namespace segmat {
 namespace test {
+
+std::vector<std::vector<int>>
+loadHumans(const std::string& prefix, int count, std::size_t num_faces)
+{
+  std::vector<std::vector<int>> humans;
+  for (int k = 0; k < count; ++k)
+    humans.push_back(
+        io::loadSeg(prefix + std::to_string(k) + ".seg", static_cast<long>(num_faces)));
+  return humans;
+}
 
 std::size_t
 segmentWithFlatJoin(const TriangleMesh::Ptr& mesh, const PsbEvaluator& evaluator,
