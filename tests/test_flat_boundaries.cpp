@@ -147,6 +147,14 @@ gridSurface(double fold_degrees, double noise_degrees)
       }
   return s;
 }
+
+std::vector<BoundaryEdge>
+measureSides(const GridSurface& s)
+{
+  detail::BoundaryGraph graph{s.edges, s.normals, {}, {}};
+  detail::indexNeighbours(graph, static_cast<int>(s.labels.size()));
+  return detail::measureSideCurvatures(graph, s.labels, s.positions);
+}
 } // namespace
 
 TEST(FlatBoundaries, SideMeansTellNoisyNormalsFromAFold)
@@ -158,23 +166,22 @@ TEST(FlatBoundaries, SideMeansTellNoisyNormalsFromAFold)
   EXPECT_EQ(detail::joinFlatBoundaries(flat.labels, 2, flat.edges, diagonal),
             (std::vector<int>{0, 1}));
   // Between the means of the two sides the noise averages out: the boundary is flat.
-  const std::vector<BoundaryEdge> measured_before = flat.edges;
-  detail::measureSideCurvatures(flat.edges, flat.labels, flat.positions, flat.normals);
-  EXPECT_EQ(detail::joinFlatBoundaries(flat.labels, 2, flat.edges, diagonal),
+  const std::vector<BoundaryEdge> measured = measureSides(flat);
+  EXPECT_EQ(detail::joinFlatBoundaries(flat.labels, 2, measured, diagonal),
             (std::vector<int>{0, 0}));
   // Only boundary edges are measured again.
+  ASSERT_EQ(measured.size(), flat.edges.size());
   int changed = 0;
-  for (std::size_t e = 0; e < flat.edges.size(); ++e) {
-    const bool boundary = flat.labels[flat.edges[e].a] != flat.labels[flat.edges[e].b];
+  for (std::size_t e = 0; e < measured.size(); ++e) {
+    const bool boundary = flat.labels[measured[e].a] != flat.labels[measured[e].b];
     if (!boundary)
-      EXPECT_EQ(flat.edges[e].curvature, measured_before[e].curvature);
+      EXPECT_EQ(measured[e].curvature, flat.edges[e].curvature);
     changed += boundary;
   }
   EXPECT_EQ(changed, 3 * 51 - 2); // straight and diagonal edges across x = 0.5
 
   // A 20° fold under the same noise stays a boundary: each side keeps its own plane.
   GridSurface fold = gridSurface(20.0, 3.0);
-  detail::measureSideCurvatures(fold.edges, fold.labels, fold.positions, fold.normals);
-  EXPECT_EQ(detail::joinFlatBoundaries(fold.labels, 2, fold.edges, diagonal),
+  EXPECT_EQ(detail::joinFlatBoundaries(fold.labels, 2, measureSides(fold), diagonal),
             (std::vector<int>{0, 1}));
 }

@@ -95,45 +95,57 @@ joinFlatBoundaries(const std::vector<int>& labels, int num_labels,
 }
 
 void
-measureSideCurvatures(std::vector<BoundaryEdge>& edges, const std::vector<int>& labels,
-                      const std::vector<Eigen::Vector3d>& positions,
-                      const std::vector<Eigen::Vector3d>& normals)
+indexNeighbours(BoundaryGraph& graph, int num_elements)
+{
+  std::vector<int>& offsets = graph.offsets;
+  offsets.assign(static_cast<std::size_t>(num_elements) + 1, 0);
+  for (const BoundaryEdge& e : graph.edges) {
+    ++offsets[e.a + 1];
+    ++offsets[e.b + 1];
+  }
+  for (int i = 0; i < num_elements; ++i)
+    offsets[i + 1] += offsets[i];
+  graph.neighbours.resize(offsets.back());
+  std::vector<int> cursor(offsets.begin(), offsets.end() - 1);
+  for (const BoundaryEdge& e : graph.edges) {
+    graph.neighbours[cursor[e.a]++] = e.b;
+    graph.neighbours[cursor[e.b]++] = e.a;
+  }
+}
+
+std::vector<BoundaryEdge>
+measureSideCurvatures(const BoundaryGraph& graph, const std::vector<int>& labels,
+                      const std::vector<Eigen::Vector3d>& positions)
 {
   const int n = static_cast<int>(labels.size());
-  // Adjacency in CSR form.
-  std::vector<int> start(static_cast<std::size_t>(n) + 1, 0);
-  for (const BoundaryEdge& e : edges) {
-    ++start[e.a + 1];
-    ++start[e.b + 1];
-  }
-  for (int i = 0; i < n; ++i)
-    start[i + 1] += start[i];
-  std::vector<int> adjacent(start.back()), cursor(start.begin(), start.end() - 1);
-  for (const BoundaryEdge& e : edges) {
-    adjacent[cursor[e.a]++] = e.b;
-    adjacent[cursor[e.b]++] = e.a;
-  }
+  const std::vector<int>& offsets = graph.offsets;
+  const std::vector<Eigen::Vector3d>& normals = graph.normals;
+  std::vector<BoundaryEdge> measured = graph.edges;
+  // An element on several boundary edges has one side: it is walked once.
+  std::vector<int> side_of(n, -1);
+  std::vector<Eigen::Vector3d> centres, sums;
   std::vector<int> seen(n, -1), frontier, next;
-  int stamp = 0;
+  const double crease_cosine = std::cos(kSideCreaseDegrees * M_PI / 180.0);
   // Mean position and summed normal of the elements of \a from's label within kSideSteps,
   // through elements that turn less than a crease from \a from.
-  const double crease_cosine = std::cos(kSideCreaseDegrees * M_PI / 180.0);
-  const auto side = [&](int from, Eigen::Vector3d& centre, Eigen::Vector3d& normal) {
-    ++stamp;
+  const auto side = [&](int from) {
+    if (side_of[from] >= 0)
+      return side_of[from];
+    const int stamp = side_of[from] = static_cast<int>(centres.size());
     seen[from] = stamp;
     frontier.assign(1, from);
-    centre = positions[from];
-    normal = normals[from];
+    Eigen::Vector3d centre = positions[from], normal = normals[from];
     const double length = normal.norm();
     int count = 1;
     for (int step = 0; step < kSideSteps && length > 0.0; ++step) {
       next.clear();
       for (int i : frontier)
-        for (int k = start[i]; k < start[i + 1]; ++k) {
-          const int j = adjacent[k];
-          if (seen[j] == stamp || labels[j] != labels[from] ||
-              !(normals[j].dot(normals[from]) >= crease_cosine * normals[j].norm() * length &&
-                normals[j].dot(normals[from]) > 0.0))
+        for (int k = offsets[i]; k < offsets[i + 1]; ++k) {
+          const int j = graph.neighbours[k];
+          if (seen[j] == stamp || labels[j] != labels[from])
+            continue;
+          const double cosine = normals[j].dot(normals[from]);
+          if (!(cosine > 0.0 && cosine >= crease_cosine * normals[j].norm() * length))
             continue;
           seen[j] = stamp;
           next.push_back(j);
@@ -143,16 +155,17 @@ measureSideCurvatures(std::vector<BoundaryEdge>& edges, const std::vector<int>& 
         }
       frontier.swap(next);
     }
-    centre /= double(count);
+    centres.push_back(centre / double(count));
+    sums.push_back(normal);
+    return stamp;
   };
-  for (BoundaryEdge& e : edges) {
+  for (BoundaryEdge& e : measured) {
     if (labels[e.a] == labels[e.b])
       continue;
-    Eigen::Vector3d ca, na, cb, nb;
-    side(e.a, ca, na);
-    side(e.b, cb, nb);
-    e.curvature = crossingCurvature(ca, na, cb, nb);
+    const int sa = side(e.a), sb = side(e.b);
+    e.curvature = crossingCurvature(centres[sa], sums[sa], centres[sb], sums[sb]);
   }
+  return measured;
 }
 
 pcl::PointIndices

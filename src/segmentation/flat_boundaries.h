@@ -29,7 +29,14 @@ struct BoundaryGraph
 {
   std::vector<BoundaryEdge> edges;
   std::vector<Eigen::Vector3d> normals; ///< per element
+  /// Each element's neighbours over \a edges: neighbours[offsets[i] .. offsets[i + 1]), filled
+  /// by indexNeighbours(). Kept with the graph, which serves every transfer of one surface.
+  std::vector<int> offsets, neighbours;
 };
+
+/** \brief Fills \a graph's neighbour lists from its edges, for \a num_elements elements. */
+void
+indexNeighbours(BoundaryGraph& graph, int num_elements);
 
 /** \brief Curvature of the surface across two neighbouring elements: the angle between their
  * outward normals (radians) over the distance between their centres. Positive when the pair is
@@ -80,21 +87,21 @@ constexpr int kSideSteps = 3;
  * other side need not mirror (MeshLabelTransfer.BarSplitsAtTheMiddle). */
 constexpr double kSideCreaseDegrees = 45.0;
 
-/** \brief Measures the curvature across every edge between two labels between the edge's two
- * sides: each end's label's elements within kSideSteps steps of it over \a edges (through that
+/** \brief The curvature across every edge between two labels, measured between the edge's two
+ * sides: each end's label's elements within kSideSteps steps of it over the graph (through that
  * label only, and short of kSideCreaseDegrees), by crossingCurvature() of their mean positions
  * and mean normals. A fold stays a fold, since each side averages its own part of the surface;
  * noise in the normals averages out. Along a boundary that runs around a tube, pairs of
  * elements turn with the tube, while the two sides' means turn only as the surface does across
- * the boundary. Edges inside a label keep their curvature.
- * \param[in,out] edges the surface graph; the curvature of each boundary edge is replaced
+ * the boundary.
+ * \param[in] graph the surface graph, with its neighbour lists (indexNeighbours())
  * \param[in] labels one label per element
  * \param[in] positions each element's position
- * \param[in] normals each element's normal */
-void
-measureSideCurvatures(std::vector<BoundaryEdge>& edges, const std::vector<int>& labels,
-                      const std::vector<Eigen::Vector3d>& positions,
-                      const std::vector<Eigen::Vector3d>& normals);
+ * \return the graph's edges, the curvature of each boundary edge measured; edges inside a label
+ * keep theirs */
+std::vector<BoundaryEdge>
+measureSideCurvatures(const BoundaryGraph& graph, const std::vector<int>& labels,
+                      const std::vector<Eigen::Vector3d>& positions);
 
 /** \brief The MAT-graph nodes of a label that joins \a members of \a parts: their nodes,
  * ascending. */

@@ -131,6 +131,8 @@ meshSmoothnessEdges(const TriangleMesh& mesh, double omega, CreaseModel model,
           a, b, kUnmeasured,
           (mesh.vertices[adjacency[k].v0] - mesh.vertices[adjacency[k].v1]).norm()};
   }
+  if (boundary)
+    detail::indexNeighbours(*boundary, num_faces);
   return edges;
 }
 
@@ -226,6 +228,8 @@ cloudSmoothnessEdges(const pcl::PointCloud<pcl::PointXYZ>::ConstPtr& cloud,
     }
     edges.push_back({p.first, p.second, std::floor(w * degree_scale)});
   }
+  if (boundary)
+    detail::indexNeighbours(*boundary, num_nodes);
   return edges;
 }
 
@@ -373,10 +377,8 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
     for (const Eigen::Vector3d& p : positions)
       if (p.allFinite())
         box.extend(p);
-    // Measured on a copy: the graph is kept for the next transfer.
-    std::vector<detail::BoundaryEdge> measured = boundary_->edges;
-    detail::measureSideCurvatures(measured, labels, positions, boundary_->normals);
-    group = detail::joinFlatBoundaries(labels, static_cast<int>(kept.size()), measured,
+    group = detail::joinFlatBoundaries(labels, static_cast<int>(kept.size()),
+                                       detail::measureSideCurvatures(*boundary_, labels, positions),
                                        box.isEmpty() ? 0.0 : box.diagonal().norm());
   }
   std::vector<int> named(kept.size(), -1);
