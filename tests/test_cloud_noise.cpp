@@ -4,8 +4,9 @@
  *
  * CloudSegmentation on noisy clouds, one segmentation each: bundled PSB models sampled as the
  * benchmarks sample them (20 000 area-uniform points, no normals), clean and with Gaussian
- * noise of 0.2 %, 0.3 %, 0.5 % or 1 % of the diagonal. The noise is found (and only where it was added), the parts
- * stay close to the human segmentations, and the labels are golden (part count and checksum).
+ * noise of 0.2 %, 0.3 %, 0.5 % or 1 % of the diagonal. The noise is found (and only where it
+ * was added), the parts stay close to the human segmentations, and the labels are golden (part
+ * count and checksum).
  */
 #include "util/cloud_sampler.h"
 #include "util/label_hash.h"
@@ -48,9 +49,8 @@ noisyPsbCloud(int model, double percent, std::vector<std::vector<int>>& truths, 
   test::SampledCloud cloud = test::sampleMesh(mesh, 20000, 1);
   truths.clear();
   for (int k = 0; k < 4; ++k)
-    truths.push_back(cloud.pointLabels(io::loadSeg(
-        dir + "seg/" + id + "_" + std::to_string(k) + ".seg",
-        long(mesh.numFaces()))));
+    truths.push_back(cloud.pointLabels(
+        io::loadSeg(dir + "seg/" + id + "_" + std::to_string(k) + ".seg", long(mesh.numFaces()))));
   Eigen::Vector3f lo = cloud.points.front(), hi = lo;
   for (const Eigen::Vector3f& p : cloud.points) {
     lo = lo.cwiseMin(p);
