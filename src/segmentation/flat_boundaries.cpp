@@ -120,7 +120,7 @@ measureSideCurvatures(const BoundaryGraph& graph, const std::vector<int>& labels
   const int n = static_cast<int>(labels.size());
   const std::vector<int>& offsets = graph.offsets;
   const std::vector<Eigen::Vector3d>& normals = graph.normals;
-  std::vector<BoundaryEdge> measured = graph.edges;
+  std::vector<BoundaryEdge> measured;
   // An element on several boundary edges has one side: it is walked once.
   std::vector<int> side_of(n, -1);
   std::vector<Eigen::Vector3d> centres, sums;
@@ -159,11 +159,12 @@ measureSideCurvatures(const BoundaryGraph& graph, const std::vector<int>& labels
     sums.push_back(normal);
     return stamp;
   };
-  for (BoundaryEdge& e : measured) {
+  for (const BoundaryEdge& e : graph.edges) {
     if (labels[e.a] == labels[e.b])
       continue;
     const int sa = side(e.a), sb = side(e.b);
-    e.curvature = crossingCurvature(centres[sa], sums[sa], centres[sb], sums[sb]);
+    measured.push_back(e);
+    measured.back().curvature = crossingCurvature(centres[sa], sums[sa], centres[sb], sums[sb]);
   }
   return measured;
 }

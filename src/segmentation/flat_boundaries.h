@@ -97,8 +97,8 @@ constexpr double kSideCreaseDegrees = 45.0;
  * \param[in] graph the surface graph, with its neighbour lists (indexNeighbours())
  * \param[in] labels one label per element
  * \param[in] positions each element's position
- * \return the graph's edges, the curvature of each boundary edge measured; edges inside a label
- * keep theirs */
+ * \return the graph's edges between two labels, in graph order, each with its curvature
+ * measured (the edges inside a label are all that joinFlatBoundaries() would leave out) */
 std::vector<BoundaryEdge>
 measureSideCurvatures(const BoundaryGraph& graph, const std::vector<int>& labels,
                       const std::vector<Eigen::Vector3d>& positions);
