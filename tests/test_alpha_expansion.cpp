@@ -1,6 +1,8 @@
 // α-expansion against brute-force enumeration and hand-solved problems.
 #include <segmat/graph_cut/alpha_expansion.h>
 
+#include "../src/graph_cut/relabel_free_nodes.h"
+
 #include <gtest/gtest.h>
 #include <pcl/console/print.h>
 
@@ -263,4 +265,66 @@ TEST(AlphaExpansion, CycleCapIsHonoured)
   std::vector<int> c;
   ASSERT_TRUE(full.compute(c));
   EXPECT_EQ(b, c);
+}
+
+// A chain 0 - 1 - 2 - 3 with nodes 0 and 3 held at labels 0 and 1 and nodes 1 and 2 free. Each
+// free node prefers label 1 by 2, but the edges 0-1 and 1-2 weigh 10 and 2-3 only 1. By hand:
+// (0, 0) costs 2 + 2 + 1 (the edge 2-3 cut) = 5; (1, 1) costs 10 (edge 0-1); (0, 1) costs 2 +
+// 10; (1, 0) costs 2 + 10 + 10 + 1. So the free nodes take label 0 against their own costs.
+TEST(RelabelFreeNodes, HeldNeighboursPriceTheCut)
+{
+  Eigen::MatrixXd unary(4, 2);
+  unary << 7, 0, 2, 0, 2, 0, 0, 7; // nodes 0 and 3 would rather switch: they are held
+  const std::vector<PottsEdge> edges{{0, 1, 10.0}, {1, 2, 10.0}, {2, 3, 1.0}};
+  std::vector<int> labels{0, -1, -1, 1};
+  ASSERT_TRUE(detail::relabelFreeNodes(unary, edges, {0, 1, 1, 0}, 100, labels));
+  EXPECT_EQ(labels, (std::vector<int>{0, 0, 0, 1}));
+  EXPECT_DOUBLE_EQ(computePottsEnergy(unary, edges, labels), 7.0 + 5.0 + 7.0);
+  // With the edge 2-3 as heavy as the others, the cut moves to 0-1: (1, 1) costs 10, (0, 0) 14.
+  const std::vector<PottsEdge> heavy{{0, 1, 10.0}, {1, 2, 10.0}, {2, 3, 10.0}};
+  ASSERT_TRUE(detail::relabelFreeNodes(unary, heavy, {0, 1, 1, 0}, 100, labels));
+  EXPECT_EQ(labels, (std::vector<int>{0, 1, 1, 1}));
+  // Nothing free: nothing changes.
+  ASSERT_TRUE(detail::relabelFreeNodes(unary, heavy, {0, 0, 0, 0}, 100, labels));
+  EXPECT_EQ(labels, (std::vector<int>{0, 1, 1, 1}));
+}
+
+// With two labels an expansion move is an exact binary cut, so the free nodes reach the lowest
+// energy over every labelling of theirs with the others held, found here by enumeration.
+TEST(RelabelFreeNodes, TwoLabelsReachTheOptimumWithTheOthersHeld)
+{
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 40; ++trial) {
+    const int n = 9;
+    Eigen::MatrixXd unary(n, 2);
+    for (int i = 0; i < n; ++i)
+      for (int l = 0; l < 2; ++l)
+        unary(i, l) = draw(rng, 12);
+    std::vector<PottsEdge> edges;
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b)
+        if (rng() % 3 == 0)
+          edges.push_back({a, b, draw(rng, 8)});
+    std::vector<char> free(n);
+    std::vector<int> held(n), free_nodes;
+    for (int i = 0; i < n; ++i) {
+      free[i] = rng() % 2 == 0;
+      held[i] = free[i] ? -1 : static_cast<int>(rng() % 2);
+      if (free[i])
+        free_nodes.push_back(i);
+    }
+    double best = std::numeric_limits<double>::infinity();
+    for (int mask = 0; mask < (1 << free_nodes.size()); ++mask) {
+      std::vector<int> labels = held;
+      for (std::size_t k = 0; k < free_nodes.size(); ++k)
+        labels[free_nodes[k]] = (mask >> k) & 1;
+      best = std::min(best, computePottsEnergy(unary, edges, labels));
+    }
+    std::vector<int> labels = held;
+    ASSERT_TRUE(detail::relabelFreeNodes(unary, edges, free, 100, labels)) << trial;
+    EXPECT_DOUBLE_EQ(computePottsEnergy(unary, edges, labels), best) << trial;
+    for (int i = 0; i < n; ++i)
+      if (!free[i])
+        EXPECT_EQ(labels[i], held[i]) << trial << " node " << i;
+  }
 }

@@ -8,6 +8,7 @@
 
 #include "../common/point_kd_tree.h"
 #include "../common/thread_count.h"
+#include "../graph_cut/relabel_free_nodes.h"
 #include "flat_boundaries.h"
 
 #include <pcl/console/print.h>
@@ -293,6 +294,7 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
                          const std::vector<double>& weights, std::vector<int>& labels)
 {
   label_parts_.clear();
+  energy_ = 0.0;
   if (!graph_ || graph_->empty()) {
     PCL_ERROR("[segmat::%s::transfer] no MAT graph, or an empty one.\n", caller);
     return false;
@@ -320,12 +322,14 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
     labels.clear();
     return false;
   }
-  // Parts below the minimal share: cut again among the others, until none is left below it.
-  // Each round drops at least one part, so this ends.
+  // Parts below the minimal share are dropped, and only the elements they won get new labels,
+  // with every other element held at its label: those were chosen under the same costs, and
+  // cutting the whole surface again would cost about as much as the first cut. Kept parts only
+  // gain elements, so one round leaves none below the share.
   std::vector<int> kept(parts_.size());
-  for (std::size_t l = 0; l < kept.size(); ++l)
-    kept[l] = static_cast<int>(l);
-  while (min_part_fraction_ > 0.0 && kept.size() > 1) {
+  std::iota(kept.begin(), kept.end(), 0);
+  energy_ = solver_.getEnergy();
+  if (min_part_fraction_ > 0.0 && kept.size() > 1) {
     std::vector<double> share(kept.size(), 0.0);
     double total = 0.0;
     for (std::size_t i = 0; i < labels.size(); ++i) {
@@ -334,39 +338,32 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
       total += w;
     }
     std::vector<int> next;
-    bool dropped = false;
-    for (std::size_t r = 0; r < kept.size(); ++r) {
-      if (share[r] > 0.0 && share[r] < min_part_fraction_ * total)
-        dropped = true;
-      else if (share[r] > 0.0)
+    for (std::size_t r = 0; r < kept.size(); ++r)
+      if (share[r] >= min_part_fraction_ * total)
         next.push_back(static_cast<int>(r));
-    }
-    if (!dropped || next.empty())
-      break;
-    Eigen::MatrixXd reduced(unary.rows(), static_cast<Eigen::Index>(next.size()));
-    std::vector<int> column(kept.size(), -1); // current label → its column in reduced
-    for (std::size_t r = 0; r < next.size(); ++r) {
-      reduced.col(static_cast<Eigen::Index>(r)) = unary.col(kept[next[r]]);
-      column[next[r]] = static_cast<int>(r);
-    }
-    // The cut so far is the start: only the faces or points of the dropped parts need new labels.
-    std::vector<int> start(labels.size());
-    for (std::size_t i = 0; i < labels.size(); ++i) {
-      start[i] = column[labels[i]];
-      Eigen::Index best = 0;
-      if (start[i] < 0) {
-        reduced.row(static_cast<Eigen::Index>(i)).minCoeff(&best);
-        start[i] = static_cast<int>(best);
+    const bool dropped = std::any_of(share.begin(), share.end(), [&](double v) {
+      return v > 0.0 && v < min_part_fraction_ * total;
+    });
+    if (dropped && !next.empty()) {
+      Eigen::MatrixXd reduced(unary.rows(), static_cast<Eigen::Index>(next.size()));
+      std::vector<int> column(kept.size(), -1); // label → its column in reduced
+      for (std::size_t r = 0; r < next.size(); ++r) {
+        reduced.col(static_cast<Eigen::Index>(r)) = unary.col(next[r]);
+        column[next[r]] = static_cast<int>(r);
       }
+      std::vector<char> free(labels.size());
+      for (std::size_t i = 0; i < labels.size(); ++i) {
+        free[i] = column[labels[i]] < 0;
+        labels[i] = column[labels[i]];
+      }
+      if (!detail::relabelFreeNodes(reduced, solver_.getEdges(), free, solver_.getMaxCycles(),
+                                    labels)) {
+        labels.clear();
+        return false;
+      }
+      energy_ = computePottsEnergy(reduced, solver_.getEdges(), labels);
+      kept.swap(next);
     }
-    solver_.setUnaryCosts(reduced);
-    if (!solver_.compute(std::move(start), labels)) {
-      labels.clear();
-      return false;
-    }
-    for (int& r : next)
-      r = kept[r];
-    kept.swap(next);
   }
   // Parts whose boundary crosses flat surface become one; a joined label is named by its
   // lowest part.

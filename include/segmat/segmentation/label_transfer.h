@@ -236,7 +236,7 @@ public:
   double
   getEnergy() const
   {
-    return solver_.getEnergy();
+    return energy_;
   }
 
   /** \brief For each output label of the last transfer, the indices of its parts in getParts(),
@@ -275,10 +275,10 @@ public:
 
   /** \brief Smallest share of the surface a part may keep: of the mesh's area, or of the
    * cloud's points (default 0.002, the value of the grower's minimal region η). A part
-   * that the cut leaves with less is dropped and the cut is made again without it, so its
-   * faces go to the parts that suit them best; noise leaves such slivers where a medial island
-   * wins a handful of faces. 0 keeps every part that wins an element. Values outside [0, 1)
-   * are ignored with a warning.
+   * that the cut leaves with less is dropped, and its elements alone are cut again among the
+   * other parts (every other element keeps its label), so they go to the parts that suit them
+   * best; noise leaves such slivers where a medial island wins a handful of faces. 0 keeps
+   * every part that wins an element. Values outside [0, 1) are ignored with a warning.
    */
   void
   setMinPartFraction(double fraction);
@@ -339,6 +339,7 @@ protected:
   newBoundary();
 
   AlphaExpansion solver_;
+  double energy_ = 0.0; ///< of the last labelling, after dropping parts
   std::vector<std::vector<int>> label_parts_;
   bool join_flat_boundaries_ = true;
   /// The smoothness edges as joinFlatBoundaries() reads them.
