@@ -305,12 +305,12 @@ TEST(RelabelFreeNodes, TwoLabelsReachTheOptimumWithTheOthersHeld)
       for (int b = a + 1; b < n; ++b)
         if (rng() % 3 == 0)
           edges.push_back({a, b, draw(rng, 8)});
-    std::vector<char> free(n);
+    std::vector<char> is_free(n);
     std::vector<int> held(n), free_nodes;
     for (int i = 0; i < n; ++i) {
-      free[i] = rng() % 2 == 0;
-      held[i] = free[i] ? -1 : static_cast<int>(rng() % 2);
-      if (free[i])
+      is_free[i] = rng() % 2 == 0;
+      held[i] = is_free[i] ? -1 : static_cast<int>(rng() % 2);
+      if (is_free[i])
         free_nodes.push_back(i);
     }
     double best = std::numeric_limits<double>::infinity();
@@ -321,10 +321,10 @@ TEST(RelabelFreeNodes, TwoLabelsReachTheOptimumWithTheOthersHeld)
       best = std::min(best, computePottsEnergy(unary, edges, labels));
     }
     std::vector<int> labels = held;
-    ASSERT_TRUE(detail::relabelFreeNodes(unary, edges, free, 100, labels)) << trial;
+    ASSERT_TRUE(detail::relabelFreeNodes(unary, edges, is_free, 100, labels)) << trial;
     EXPECT_DOUBLE_EQ(computePottsEnergy(unary, edges, labels), best) << trial;
     for (int i = 0; i < n; ++i)
-      if (!free[i])
+      if (!is_free[i])
         EXPECT_EQ(labels[i], held[i]) << trial << " node " << i;
   }
 }

@@ -9,11 +9,11 @@ namespace detail {
 
 bool
 relabelFreeNodes(const Eigen::MatrixXd& unary, const std::vector<PottsEdge>& edges,
-                 const std::vector<char>& free, int max_cycles, std::vector<int>& labels)
+                 const std::vector<char>& is_free, int max_cycles, std::vector<int>& labels)
 {
   std::vector<int> index(labels.size(), -1), nodes; // node → its row among the free nodes
   for (std::size_t i = 0; i < labels.size(); ++i)
-    if (free[i]) {
+    if (is_free[i]) {
       index[i] = static_cast<int>(nodes.size());
       nodes.push_back(static_cast<int>(i));
     }

@@ -14,7 +14,7 @@ namespace segmat {
 namespace detail {
 
 /** \brief Minimises the Potts energy of \a unary and \a edges over the labels of the nodes
- * marked in \a free only, every other node held at its label in \a labels: a held neighbour
+ * marked in \a is_free only, every other node held at its label in \a labels: a held neighbour
  * adds its edge's weight to each label of a free node but its own, and the free nodes are
  * labelled by α-expansion (at most \a max_cycles cycles) from the argmin of those costs.
  * Relabelling a few nodes so costs a cut of the few nodes, not of the whole graph.
@@ -24,7 +24,7 @@ namespace detail {
  */
 bool
 relabelFreeNodes(const Eigen::MatrixXd& unary, const std::vector<PottsEdge>& edges,
-                 const std::vector<char>& free, int max_cycles, std::vector<int>& labels);
+                 const std::vector<char>& is_free, int max_cycles, std::vector<int>& labels);
 
 } // namespace detail
 } // namespace segmat

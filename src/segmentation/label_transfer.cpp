@@ -351,13 +351,13 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
         reduced.col(static_cast<Eigen::Index>(r)) = unary.col(next[r]);
         column[next[r]] = static_cast<int>(r);
       }
-      std::vector<char> free(labels.size());
+      std::vector<char> dropped_element(labels.size());
       for (std::size_t i = 0; i < labels.size(); ++i) {
-        free[i] = column[labels[i]] < 0;
+        dropped_element[i] = column[labels[i]] < 0;
         labels[i] = column[labels[i]];
       }
-      if (!detail::relabelFreeNodes(reduced, solver_.getEdges(), free, solver_.getMaxCycles(),
-                                    labels)) {
+      if (!detail::relabelFreeNodes(reduced, solver_.getEdges(), dropped_element,
+                                    solver_.getMaxCycles(), labels)) {
         labels.clear();
         return false;
       }
