@@ -183,13 +183,17 @@ TEST(NoisyMesh, DroppedSliversGiveAwayOnlyTheirOwnFaces)
   const auto kept_parts = seg.getMatParts();
   ASSERT_EQ(all.size(), kept.size());
   // A part is the same part when it holds the same MAT nodes.
-  auto nodes = [](const pcl::PointIndices& part) {
-    return std::set<int>(part.indices.begin(), part.indices.end());
+  auto nodes = [](const std::vector<pcl::PointIndices>& parts) {
+    std::vector<std::set<int>> sets;
+    for (const pcl::PointIndices& part : parts)
+      sets.emplace_back(part.indices.begin(), part.indices.end());
+    return sets;
   };
+  const auto all_nodes = nodes(all_parts), kept_nodes = nodes(kept_parts);
   std::vector<int> same(all_parts.size(), -1); // label in `all` → its label in `kept`
-  for (std::size_t a = 0; a < all_parts.size(); ++a)
-    for (std::size_t k = 0; k < kept_parts.size(); ++k)
-      if (nodes(all_parts[a]) == nodes(kept_parts[k]))
+  for (std::size_t a = 0; a < all_nodes.size(); ++a)
+    for (std::size_t k = 0; k < kept_nodes.size(); ++k)
+      if (all_nodes[a] == kept_nodes[k])
         same[a] = int(k);
   const int dropped = int(std::count(same.begin(), same.end(), -1));
   EXPECT_EQ(dropped, 4);

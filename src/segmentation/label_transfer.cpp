@@ -324,8 +324,8 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
   }
   // Parts below the minimal share are dropped, and only the elements they won get new labels,
   // with every other element held at its label: those were chosen under the same costs, and
-  // cutting the whole surface again would cost about as much as the first cut. Kept parts only
-  // gain elements, so one round leaves none below the share.
+  // cutting the whole surface again would cost up to two thirds of the first cut. Kept parts
+  // only gain elements, so one round leaves none below the share.
   std::vector<int> kept(parts_.size());
   std::iota(kept.begin(), kept.end(), 0);
   energy_ = solver_.getEnergy();
