@@ -5,12 +5,16 @@
  * bench_label_transfer: the surface transfer of SEG-MAT on teddy, in pieces — face graph,
  * data term, α-expansion — and the cloud transfer on area-uniform samples of teddy's surface
  * (normals from the faces), medians over repetitions, one thread. CPU seconds are given too:
- * wall time is inflated when other processes share the cores.
+ * wall time is inflated when other processes share the cores. With -s K the mesh is teddy
+ * subdivided K times (4^K times the faces, the same surface), and the mesh transfer is timed
+ * both as it is and cut whole (setMaxFullCutElements(0)), with the Rand distance between the
+ * two labellings and their energies.
  *
- *   build/bin/bench_label_transfer [-r REPETITIONS] [-n POINTS[,POINTS...]]
+ *   build/bin/bench_label_transfer [-r REPETITIONS] [-n POINTS[,POINTS...]] [-s K]
  * Run from the repository root.
  */
 #include "bench_common.h"
+#include "shape_variants.h"
 
 #include <segmat/geometry/aabb_tree.h>
 #include <segmat/io/ma.h>
@@ -69,10 +73,13 @@ main(int argc, char** argv)
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
   int repetitions = 5;
   std::vector<long> sizes{100000, 1000000};
+  int subdivisions = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "-r" && i + 1 < argc)
       repetitions = std::max(1, std::atoi(argv[++i]));
+    else if (arg == "-s" && i + 1 < argc)
+      subdivisions = std::max(0, std::atoi(argv[++i]));
     else if (arg == "-n" && i + 1 < argc) {
       sizes.clear();
       std::stringstream list(argv[++i]);
@@ -81,13 +88,15 @@ main(int argc, char** argv)
         sizes.push_back(std::max(1L, std::atol(item.c_str())));
     }
     else {
-      std::fprintf(stderr, "usage: bench_label_transfer [-r N] [-n POINTS[,POINTS...]]\n");
+      std::fprintf(stderr, "usage: bench_label_transfer [-r N] [-n POINTS[,POINTS...]] [-s K]\n");
       return 2;
     }
   }
 
   try {
     auto mesh = std::make_shared<segmat::TriangleMesh>(segmat::io::loadMesh("data/teddy/teddy.off"));
+    for (int k = 0; k < subdivisions; ++k)
+      *mesh = segmat::bench::subdivided(*mesh);
     const segmat::MedialMesh base = segmat::io::loadMa("data/teddy/teddy_mat.ma");
     const segmat::MedialMesh structured = segmat::io::loadMa("data/teddy/teddy_smat.ma");
     auto graph = std::make_shared<segmat::MatGraph>(segmat::MatGraph::fromMedialMesh(base));
@@ -107,9 +116,10 @@ main(int argc, char** argv)
     std::size_t coarse = 0;
     for (const auto& p : parts)
       coarse += p.size();
-    std::printf("teddy: %zu faces, %zu parts, %zu coarse nodes; median of %d runs, "
+    std::printf("teddy%s: %zu faces, %zu parts, %zu coarse nodes; median of %d runs, "
                 "OMP_NUM_THREADS=%s\n",
-                mesh->numFaces(), parts.size(), coarse, repetitions,
+                subdivisions > 0 ? " subdivided" : "", mesh->numFaces(), parts.size(), coarse,
+                repetitions,
                 std::getenv("OMP_NUM_THREADS"));
 
     std::vector<Eigen::Vector3d> centroids(mesh->numFaces());
@@ -131,13 +141,32 @@ main(int argc, char** argv)
              solver.compute(labels);
            }));
     std::printf("  (%d cycles, %d moves)\n", solver.getCycles(), solver.getMoves());
+    double energy = 0.0;
     report("mesh: MeshLabelTransfer, fresh", timeIt(repetitions, [&] {
              segmat::MeshLabelTransfer transfer;
              transfer.setInputMesh(mesh);
              transfer.setInputGraph(graph);
              transfer.setParts(parts);
              transfer.transfer(labels);
+             energy = transfer.getEnergy();
            }));
+    if (mesh->numFaces() > segmat::MeshLabelTransfer().getMaxFullCutElements()) {
+      std::vector<int> whole;
+      double whole_energy = 0.0;
+      report("mesh: MeshLabelTransfer, cut whole", timeIt(repetitions, [&] {
+               segmat::MeshLabelTransfer transfer;
+               transfer.setMaxFullCutElements(0);
+               transfer.setInputMesh(mesh);
+               transfer.setInputGraph(graph);
+               transfer.setParts(parts);
+               transfer.transfer(whole);
+               whole_energy = transfer.getEnergy();
+             }));
+      std::printf("  coarse to fine against cut whole: Rand distance %.4f, energy %.0f / %.0f "
+                  "(%+.2f %%)\n",
+                  segmat::bench::randDistance(labels, whole), energy, whole_energy,
+                  100.0 * (energy / whole_energy - 1.0));
+    }
 
     // Area-uniform samples, deterministic (floats from the raw engine output).
     std::vector<double> cumulative(mesh->numFaces());

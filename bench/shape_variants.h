@@ -3,8 +3,8 @@
  * SPDX-License-Identifier: BSD-3-Clause
  *
  * Transformed copies of a mesh that must keep its parts (header only), shared by
- * tests/test_invariance.cpp and bench/bench_invariance.cpp, and the Rand distance they compare
- * labels with.
+ * tests/test_invariance.cpp and bench/bench_invariance.cpp, the Rand distance they compare
+ * labels with, and midpoint subdivision (bench_label_transfer: a scan-sized copy of a shape).
  */
 #pragma once
 
@@ -13,6 +13,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -49,6 +50,35 @@ randDistance(const std::vector<int>& a, const std::vector<int>& b)
   for (const auto& entry : in_b)
     together_b += pairs(entry.second);
   return n < 2 ? 0.0 : (together_a + together_b - 2 * together_both) / pairs(n);
+}
+
+/** \brief Each triangle split into four at its edges' midpoints: the same surface with four times
+ * the faces. Face k of the result lies in face k % mesh.numFaces() of \a mesh. */
+inline TriangleMesh
+subdivided(const TriangleMesh& mesh)
+{
+  TriangleMesh out;
+  out.vertices = mesh.vertices;
+  std::map<std::pair<int, int>, int> midpoint;
+  const auto mid = [&](int a, int b) {
+    const std::pair<int, int> key(std::min(a, b), std::max(a, b));
+    const auto it = midpoint.find(key);
+    if (it != midpoint.end())
+      return it->second;
+    out.vertices.push_back(0.5 * (mesh.vertices[a] + mesh.vertices[b]));
+    return midpoint[key] = static_cast<int>(out.vertices.size()) - 1;
+  };
+  const std::size_t nf = mesh.numFaces();
+  out.faces.resize(4 * nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const Eigen::Vector3i& t = mesh.faces[f];
+    const int ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
+    out.faces[f] = Eigen::Vector3i(t[0], ab, ca);
+    out.faces[nf + f] = Eigen::Vector3i(ab, t[1], bc);
+    out.faces[2 * nf + f] = Eigen::Vector3i(ca, bc, t[2]);
+    out.faces[3 * nf + f] = Eigen::Vector3i(ab, bc, ca);
+  }
+  return out;
 }
 
 /** \brief A fixed rigid rotation (no axis-aligned symmetry). */

@@ -1,6 +1,7 @@
 // α-expansion against brute-force enumeration and hand-solved problems.
 #include <segmat/graph_cut/alpha_expansion.h>
 
+#include "../src/graph_cut/coarse_expansion.h"
 #include "../src/graph_cut/relabel_free_nodes.h"
 
 #include <gtest/gtest.h>
@@ -327,4 +328,71 @@ TEST(RelabelFreeNodes, TwoLabelsReachTheOptimumWithTheOthersHeld)
       if (!is_free[i])
         EXPECT_EQ(labels[i], held[i]) << trial << " node " << i;
   }
+}
+
+namespace {
+
+// A W × H grid, 4-neighbour edges of weight 1; each node prefers the label of its vertical
+// band (x < 37: 0, x < 83: 1, else 2) by a cost of 3..7 for any other label (a fixed
+// pseudo-random pattern). Moving one node off its band's label costs at least 3 in data and
+// saves at most 2 in edges, so the bands are the unique optimum.
+struct BandGrid
+{
+  static constexpr int W = 400, H = 100;
+  Eigen::MatrixXd unary = Eigen::MatrixXd::Zero(W * H, 3);
+  std::vector<PottsEdge> edges;
+  std::vector<int> bands;
+
+  BandGrid()
+  {
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        const int i = y * W + x;
+        const int band = x < 37 ? 0 : x < 83 ? 1 : 2;
+        bands.push_back(band);
+        for (int l = 0; l < 3; ++l)
+          unary(i, l) = l == band ? 0.0 : 3.0 + (i * 7 + l * 13) % 5;
+        if (x + 1 < W)
+          edges.push_back({i, i + 1, 1.0});
+        if (y + 1 < H)
+          edges.push_back({i, i + W, 1.0});
+      }
+  }
+};
+
+} // namespace
+
+TEST(CoarseToFineExpansion, RecoversBoundariesThatNoClusterFollows)
+{
+  const BandGrid grid;
+  std::vector<int> labels;
+  detail::CoarseExpansion report;
+  ASSERT_TRUE(detail::coarseToFineExpansion(grid.unary, grid.edges, 16, 100, labels, &report));
+  EXPECT_EQ(labels, grid.bands);
+  // The clusters hold about 16 nodes each; only those within three clusters of the two
+  // boundaries were cut again.
+  EXPECT_GE(report.clusters, BandGrid::W * BandGrid::H / 16);
+  EXPECT_LT(report.clusters, BandGrid::W * BandGrid::H / 8);
+  EXPECT_GT(report.free_nodes, 0);
+  EXPECT_LT(report.free_nodes, BandGrid::W * BandGrid::H / 4);
+
+  // The whole-grid expansion agrees (the optimum is unique).
+  AlphaExpansion whole;
+  whole.setUnaryCosts(grid.unary);
+  whole.setEdges(grid.edges);
+  std::vector<int> exact;
+  ASSERT_TRUE(whole.compute(exact));
+  EXPECT_EQ(exact, grid.bands);
+}
+
+TEST(CoarseToFineExpansion, ClustersOfTwoAndIsolatedNodes)
+{
+  // A chain 0–1–2–3 that prefers labels 0 0 1 1, and a node 4 with no edge: it takes its
+  // cheapest label, 1.
+  Eigen::MatrixXd unary(5, 2);
+  unary << 0, 9, 0, 9, 9, 0, 9, 0, 5, 1;
+  const std::vector<PottsEdge> edges{{0, 1, 1.0}, {1, 2, 1.0}, {2, 3, 1.0}};
+  std::vector<int> labels;
+  ASSERT_TRUE(detail::coarseToFineExpansion(unary, edges, 1, 100, labels));
+  EXPECT_EQ(labels, (std::vector<int>{0, 0, 1, 1, 1}));
 }

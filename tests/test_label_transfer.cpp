@@ -355,6 +355,28 @@ TEST(MeshLabelTransfer, BarSplitsAtTheMiddle)
   EXPECT_EQ(transfer.getLabelParts(), (std::vector<std::vector<int>>{{0, 1}}));
 }
 
+TEST(MeshLabelTransfer, LargeMeshIsCutCoarseToFineAlongTheSameBoundary)
+{
+  BarScene s = bar();
+  s.mesh = std::make_shared<TriangleMesh>(
+      boxMesh({-2, -0.5, -0.5}, {2, 0.5, 0.5}, Eigen::Vector3i(32, 8, 8))); // 2304 faces
+  MeshLabelTransfer transfer;
+  EXPECT_EQ(transfer.getMaxFullCutElements(), 65536u);
+  transfer.setJoinFlatBoundaries(false);
+  transfer.setInputMesh(s.mesh);
+  transfer.setInputGraph(s.graph);
+  transfer.setParts(s.parts);
+  std::vector<int> whole, coarse;
+  ASSERT_TRUE(transfer.transfer(whole));
+  const double whole_energy = transfer.getEnergy();
+  // 250 clusters of about 10 faces: x = 0 is no cluster's border, and the fine pass finds it.
+  transfer.setMaxFullCutElements(500);
+  ASSERT_TRUE(transfer.transfer(coarse));
+  EXPECT_EQ(coarse, labelsBySide(*s.mesh));
+  EXPECT_EQ(coarse, whole);
+  EXPECT_EQ(transfer.getEnergy(), whole_energy);
+}
+
 TEST(MeshLabelTransfer, SmoothingOverridesAWeakDataPreference)
 {
   // Part 1 is a lone small sphere near the +x end cap's corner: without smoothing a few faces

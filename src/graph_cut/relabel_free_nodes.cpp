@@ -9,7 +9,8 @@ namespace detail {
 
 bool
 relabelFreeNodes(const Eigen::MatrixXd& unary, const std::vector<PottsEdge>& edges,
-                 const std::vector<char>& is_free, int max_cycles, std::vector<int>& labels)
+                 const std::vector<char>& is_free, int max_cycles, std::vector<int>& labels,
+                 bool from_labels)
 {
   std::vector<int> index(labels.size(), -1), nodes; // node → its row among the free nodes
   for (std::size_t i = 0; i < labels.size(); ++i)
@@ -37,8 +38,11 @@ relabelFreeNodes(const Eigen::MatrixXd& unary, const std::vector<PottsEdge>& edg
   solver.setMaxCycles(max_cycles);
   solver.setUnaryCosts(costs);
   solver.setEdges(std::move(free_edges));
-  std::vector<int> free_labels;
-  if (!solver.compute(free_labels))
+  std::vector<int> initial, free_labels;
+  if (from_labels)
+    for (const int i : nodes)
+      initial.push_back(labels[i]);
+  if (!solver.compute(std::move(initial), free_labels))
     return false;
   for (std::size_t f = 0; f < nodes.size(); ++f)
     labels[nodes[f]] = free_labels[f];

@@ -8,6 +8,7 @@
 
 #include "../common/point_kd_tree.h"
 #include "../common/thread_count.h"
+#include "../graph_cut/coarse_expansion.h"
 #include "../graph_cut/relabel_free_nodes.h"
 #include "flat_boundaries.h"
 
@@ -295,6 +296,7 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
 {
   label_parts_.clear();
   energy_ = 0.0;
+  cycles_ = 0;
   if (!graph_ || graph_->empty()) {
     PCL_ERROR("[segmat::%s::transfer] no MAT graph, or an empty one.\n", caller);
     return false;
@@ -318,17 +320,28 @@ LabelTransferBase::solve(const char* caller, const std::vector<Eigen::Vector3d>&
   }
   const Eigen::MatrixXd unary = computePartDistanceCosts(positions, *graph_, parts_, threads_);
   solver_.setUnaryCosts(unary);
-  if (!solver_.compute(labels)) {
+  const bool coarse =
+      max_full_cut_ > 0 && static_cast<std::size_t>(unary.rows()) > max_full_cut_;
+  // Half as many clusters as the limit: the coarse cut then costs no more than the full cut
+  // of a surface just below the limit.
+  const long clusters = static_cast<long>(std::max<std::size_t>(1, max_full_cut_ / 2));
+  detail::CoarseExpansion report;
+  if (coarse ? !detail::coarseToFineExpansion(
+                   unary, solver_.getEdges(),
+                   static_cast<int>((unary.rows() + clusters - 1) / clusters),
+                   solver_.getMaxCycles(), labels, &report)
+             : !solver_.compute(labels)) {
     labels.clear();
     return false;
   }
+  cycles_ = coarse ? report.cycles : solver_.getCycles();
   // Parts below the minimal share are dropped, and only the elements they won get new labels,
   // with every other element held at its label: those were chosen under the same costs, and
   // cutting the whole surface again would cost up to two thirds of the first cut. Kept parts
   // only gain elements, so one round leaves none below the share.
   std::vector<int> kept(parts_.size());
   std::iota(kept.begin(), kept.end(), 0);
-  energy_ = solver_.getEnergy();
+  energy_ = coarse ? computePottsEnergy(unary, solver_.getEdges(), labels) : solver_.getEnergy();
   if (min_part_fraction_ > 0.0 && kept.size() > 1) {
     std::vector<double> share(kept.size(), 0.0);
     double total = 0.0;

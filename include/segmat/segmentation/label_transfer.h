@@ -290,11 +290,37 @@ public:
     return min_part_fraction_;
   }
 
-  /** \brief α-expansion cycles run by the last transfer. */
+  /** \brief Largest number of elements (faces, or the cloud's graph points) cut at full
+   * resolution in one α-expansion (default 65536; 0: no limit).
+   *
+   * The cut's cost grows with the elements times the parts; a scanned mesh of 800 000 faces
+   * would spend most of its time in it. A larger surface is cut coarse to fine: its elements
+   * are grouped into connected clusters, half as many as the limit, the clusters are labelled by α-expansion
+   * of the summed costs, and the elements within a band around the clusters' boundaries (twice
+   * the widest cluster's depth in rings, plus one) are labelled again at full resolution with
+   * every other element held. Boundaries so lie where the fine cut would put them unless the
+   * fine optimum lies beyond the band (docs/method.md, §5). Every PSB mesh has fewer faces
+   * than the default, and is cut whole.
+   */
+  void
+  setMaxFullCutElements(std::size_t count)
+  {
+    max_full_cut_ = count;
+  }
+
+  /** \brief Largest number of elements cut at full resolution in one α-expansion. */
+  std::size_t
+  getMaxFullCutElements() const
+  {
+    return max_full_cut_;
+  }
+
+  /** \brief α-expansion cycles run by the last transfer's first cut (of the clusters, for a
+   * surface cut coarse to fine). */
   int
   getCycles() const
   {
-    return solver_.getCycles();
+    return cycles_;
   }
 
 protected:
@@ -329,6 +355,7 @@ protected:
   std::vector<std::vector<int>> parts_;
   double omega_ = 0.3;
   double min_part_fraction_ = 0.002;
+  std::size_t max_full_cut_ = 65536;
   CreaseModel crease_model_ = CreaseModel::SharpConcave;
   unsigned int threads_ = 0;
   bool edges_valid_ = false; ///< the solver holds smoothness edges of the current input
@@ -340,6 +367,7 @@ protected:
 
   AlphaExpansion solver_;
   double energy_ = 0.0; ///< of the last labelling, after dropping parts
+  int cycles_ = 0;
   std::vector<std::vector<int>> label_parts_;
   bool join_flat_boundaries_ = true;
   /// The smoothness edges as joinFlatBoundaries() reads them.
