@@ -162,7 +162,7 @@ TEST(NoisyMesh, CylinderCutAroundItsSideIsJoined)
 
 // Noise leaves slivers: parts that win a handful of faces. A part below the minimal share is
 // dropped and only its own faces are cut again, so every face of a kept part keeps that part.
-// PSB 286 (a bust, 50 212 faces) at σ = 1 % of the diagonal, bench_noise's first draw: the cut
+// PSB 286 (an armadillo, 50 212 faces) at σ = 1 % of the diagonal, bench_noise's first draw: the cut
 // leaves four parts below 0.2 % of the surface. Cut again as a whole, the surface also moves
 // some faces of kept parts to other kept parts.
 TEST(NoisyMesh, DroppedSliversGiveAwayOnlyTheirOwnFaces)
