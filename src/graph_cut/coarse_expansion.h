@@ -26,9 +26,9 @@ struct CoarseExpansion
  * The nodes are grouped into connected clusters of about \a cluster_size nodes (breadth-first,
  * in node order); the clusters are labelled by α-expansion of the summed problem (a cluster's
  * unary costs are its nodes' sums, an edge between two clusters weighs the sum of the edges
- * between them), which places every boundary to within a cluster. Then the nodes within a band
- * around those boundaries, twice the widest cluster's depth plus one ring, are labelled again
- * at full resolution with every other node held (relabelFreeNodes()), so that the boundaries
+ * between them), which places every boundary to within a cluster. Then the nodes of the
+ * clusters within three clusters of a boundary are labelled again at full resolution, from the
+ * coarse labels and with every other node held (relabelFreeNodes()), so that the boundaries
  * follow the fine edges. The result is deterministic: no step depends on threads.
  * \param[in] cluster_size nodes per cluster (at least 2)
  * \param[out] labels one per node

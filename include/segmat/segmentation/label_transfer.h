@@ -295,12 +295,12 @@ public:
    *
    * The cut's cost grows with the elements times the parts; a scanned mesh of 800 000 faces
    * would spend most of its time in it. A larger surface is cut coarse to fine: its elements
-   * are grouped into connected clusters, half as many as the limit, the clusters are labelled by α-expansion
-   * of the summed costs, and the elements within a band around the clusters' boundaries (twice
-   * the widest cluster's depth in rings, plus one) are labelled again at full resolution with
-   * every other element held. Boundaries so lie where the fine cut would put them unless the
-   * fine optimum lies beyond the band (docs/method.md, §5). Every PSB mesh has fewer faces
-   * than the default, and is cut whole.
+   * are grouped into connected clusters, half as many as the limit; the clusters are labelled
+   * by α-expansion of the summed costs; and the elements of the clusters within three clusters
+   * of a boundary are labelled again at full resolution, with every other element held. The
+   * boundaries so follow the fine edges, but the coarse cut can settle in another local optimum
+   * a few clusters away (docs/method.md, §5). Every PSB mesh has fewer faces than the default,
+   * and is cut whole.
    */
   void
   setMaxFullCutElements(std::size_t count)
