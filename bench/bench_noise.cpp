@@ -16,13 +16,17 @@
  *   build/bin/bench_noise [PSB_DIR] [--kind mesh|cloud] [--levels 0,0.2,0.5,1]
  *                         [--models 1,21,...|--half tune|check] [--points N] [--seed-offset K]
  *                         [--draws K] [--noise-draws K] [--input-axes] [--write DIR]
+ *                         [--subdivide K] [--full-cut N]
  * --draws K (meshes) segments each noisy mesh K times, with jitter seeds 0..K-1
  * (MeshSegmentation::setJitterSeed), and averages: single draws differ by more than many changes
  * one would want to measure (docs/robustness.md). --noise-draws K (meshes and clouds) draws the
  * noise K times (σ > 0), draw k with seed offset --seed-offset + 4k, and averages over them too:
  * one noise draw moves a half of psb-dev by about 0.01 (docs/noise.md). --input-axes segments
  * meshes in their own
- * orientation (MeshSegmentation::setPrincipalAxesFrame(false)).
+ * orientation (MeshSegmentation::setPrincipalAxesFrame(false)). --subdivide K splits every
+ * triangle into four at its edges' midpoints, K times, before the noise (the same surface with
+ * 4^K times the faces, each face with its parent's human labels: a scan-sized mesh), and
+ * --full-cut N sets MeshSegmentation::setMaxFullCutElements (0: every face cut at once).
  * PSB_DIR defaults to ../shared/data/psb-dev. Levels are in percent of the diagonal. --half tune
  * takes ids 1, 21, 41, ... (id mod 20 = 1), --half check ids 6, 26, 46, ... --write DIR writes
  * the noisy meshes as DIR/LEVEL/off/N.off (the input of segmat_mesh or scripts/eval_psb.sh),
@@ -101,7 +105,7 @@ parseList(const std::string& text)
 
 Result
 segmentMesh(const segmat::TriangleMesh& clean, double level, std::uint32_t seed, std::uint32_t draw,
-            bool principal_axes, const std::vector<std::vector<int>>& humans,
+            bool principal_axes, long full_cut, const std::vector<std::vector<int>>& humans,
             const std::string& write_path)
 {
   auto input = std::make_shared<segmat::TriangleMesh>(clean);
@@ -116,6 +120,8 @@ segmentMesh(const segmat::TriangleMesh& clean, double level, std::uint32_t seed,
   seg.setNumberOfThreads(1);
   seg.setJitterSeed(draw);
   seg.setPrincipalAxesFrame(principal_axes);
+  if (full_cut >= 0)
+    seg.setMaxFullCutElements(std::size_t(full_cut));
   std::vector<int> labels;
   const auto start = std::chrono::steady_clock::now();
   const bool ok = seg.segment(labels);
@@ -258,7 +264,8 @@ main(int argc, char** argv)
   std::vector<int> only;
   std::size_t points = 20000;
   std::uint32_t seed_offset = 0;
-  int draws = 1, noise_draws = 1, repeat = 1;
+  int draws = 1, noise_draws = 1, repeat = 1, subdivisions = 0;
+  long full_cut = -1; // the library's default
   bool principal_axes = true, normals = false;
   TrueSurface truth;
   for (int i = 1; i < argc; ++i) {
@@ -289,6 +296,10 @@ main(int argc, char** argv)
       draws = std::max(1, std::atoi(argv[++i]));
     else if (arg == "--noise-draws" && has_value)
       noise_draws = std::max(1, std::atoi(argv[++i]));
+    else if (arg == "--subdivide" && has_value)
+      subdivisions = std::max(0, std::atoi(argv[++i]));
+    else if (arg == "--full-cut" && has_value)
+      full_cut = std::max(0L, std::atol(argv[++i]));
     else if (arg == "--repeat" && has_value)
       repeat = std::max(1, std::atoi(argv[++i]));
     else if (arg == "--write" && has_value)
@@ -299,16 +310,18 @@ main(int argc, char** argv)
       std::cerr << "usage: bench_noise [PSB_DIR] [--kind mesh|cloud] [--levels 0,0.2,0.5,1] "
                    "[--models 1,21,...|--half tune|check] [--points N] [--seed-offset K] "
                    "[--draws K] [--noise-draws K] [--repeat R] [--input-axes] [--write DIR] "
-                   "[--surface-error] [--true-surface] [--normals]\n";
+                   "[--surface-error] [--true-surface] [--normals] [--subdivide K] "
+                   "[--full-cut N]\n";
       return arg == "-h" || arg == "--help" ? 0 : 2;
     }
   }
   if ((kind != "mesh" && kind != "cloud") || (!half.empty() && half != "tune" && half != "check") ||
       (draws > 1 && kind != "mesh") || (noise_draws > 1 && !write_dir.empty()) ||
-      ((truth.project || truth.measure || normals) && kind != "cloud")) {
+      ((truth.project || truth.measure || normals) && kind != "cloud") ||
+      ((subdivisions > 0 || full_cut >= 0) && kind != "mesh")) {
     std::cerr << "bench_noise: --kind is mesh or cloud, --half is tune or check, --draws is for "
                  "meshes, --write takes one noise draw, --surface-error, --true-surface and "
-                 "--normals are for clouds\n";
+                 "--normals are for clouds, --subdivide and --full-cut for meshes\n";
     return 2;
   }
   pcl::console::setVerbosityLevel(pcl::console::L_ERROR);
@@ -334,7 +347,7 @@ main(int argc, char** argv)
   try {
     for (int id : models) {
       const std::string stem = std::to_string(id);
-      const segmat::TriangleMesh mesh = segmat::io::loadOff(dir + "/off/" + stem + ".off");
+      segmat::TriangleMesh mesh = segmat::io::loadOff(dir + "/off/" + stem + ".off");
       std::vector<std::vector<int>> humans;
       for (int k = 0;; ++k) {
         const std::string path =
@@ -345,6 +358,17 @@ main(int argc, char** argv)
       }
       if (humans.empty())
         continue;
+      // The same surface with 4^K times the faces; each face keeps its parent's human labels.
+      for (int k = 0; k < subdivisions; ++k) {
+        const std::size_t parents = mesh.numFaces();
+        mesh = segmat::bench::subdivided(mesh);
+        for (std::vector<int>& human : humans) {
+          std::vector<int> finer(mesh.numFaces());
+          for (std::size_t f = 0; f < finer.size(); ++f)
+            finer[f] = human[f % parents];
+          human.swap(finer);
+        }
+      }
       ++scored;
       std::unique_ptr<segmat::MeshDistance> distance;
       if (truth.project || truth.measure) {
@@ -377,7 +401,8 @@ main(int argc, char** argv)
             for (int t = 0; t < repeat; ++t) {
               repeats.push_back(kind == "mesh" ? segmentMesh(mesh, levels[l], seed,
                                                              std::uint32_t(d), principal_axes,
-                                                             humans, t == 0 ? write_path : "")
+                                                             full_cut, humans,
+                                                             t == 0 ? write_path : "")
                                                : segmentCloud(cloud, levels[l], seed, humans,
                                                               t == 0 ? write_path : "", truth,
                                                               normals));

@@ -155,6 +155,23 @@ public:
     return transfer_.getMinPartFraction();
   }
 
+  /** \brief Largest number of faces or points cut at full resolution in one α-expansion
+   * (default 65536; 0: no limit; LabelTransferBase::setMaxFullCutElements). A larger surface is
+   * cut coarse to fine.
+   */
+  void
+  setMaxFullCutElements(std::size_t count)
+  {
+    transfer_.setMaxFullCutElements(count);
+  }
+
+  /** \brief Largest number of faces or points cut at full resolution in one α-expansion. */
+  std::size_t
+  getMaxFullCutElements() const
+  {
+    return transfer_.getMaxFullCutElements();
+  }
+
   /** \brief Seed of the merging's visibility sampling (default 0x5e6a7; not one of the paper's
    * parameters: for checking that a result does not hinge on one random draw).
    */
