@@ -299,7 +299,7 @@ public:
    * by α-expansion of the summed costs; and the elements of the clusters within three clusters
    * of a boundary are labelled again at full resolution, with every other element held. The
    * boundaries so follow the fine edges, but the coarse cut can settle in another local optimum
-   * a few clusters away (docs/method.md, §5). Every PSB mesh has fewer faces than the default,
+   * a few clusters away (docs/method.md, §5). Every psb-dev mesh has fewer faces than the default,
    * and is cut whole.
    */
   void
